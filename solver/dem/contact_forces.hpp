@@ -1,0 +1,27 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "dem/contact_model.hpp"
+#include "dem/dem_particles.hpp"
+#include "domain/cell_list.hpp"
+
+namespace sphdem {
+
+// Verlet list for sphere contacts: for each owned sphere, every sphere (owned or
+// halo) within r_i + r_j + skin. A full list: each owned sphere sums the forces on
+// itself only, so threads never write to the same sphere; the pair force is written
+// antisymmetrically, so action and reaction cancel exactly.
+struct ContactNeighbourList {
+  std::vector<std::uint32_t> offset, neighbour;
+  double skin = 0.0;
+  void build(const DemParticles& s, const CellList& cells, double skin);
+};
+
+// Contact force (cx,cy,cz) on every owned sphere from the linear spring-dashpot
+// (2.36) with other spheres and with the flat bottom wall at z = wall_z.
+// Records each sphere's largest overlap in overlap_max.
+void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
+                            const LinearSpringDashpot& law, double wall_z);
+
+}  // namespace sphdem

@@ -1,0 +1,26 @@
+#pragma once
+// The simulation box: an axis-aligned region, periodic or bounded per axis.
+// Knows nothing of SPH or DEM (layer 0, like SPH-EXA's cstone).
+#include <array>
+#include <cmath>
+
+namespace sphdem {
+
+struct Box {
+  std::array<double, 3> lo{0, 0, 0};
+  std::array<double, 3> hi{1, 1, 1};
+  std::array<bool, 3> periodic{true, true, false};
+
+  double length(int d) const { return hi[d] - lo[d]; }
+
+  // Map a coordinate back into [lo, hi) along a periodic axis.
+  double wrap(int d, double v) const {
+    if (!periodic[d]) return v;
+    const double L = length(d);
+    double w = v - L * std::floor((v - lo[d]) / L);
+    if (w >= hi[d]) w -= L;  // guards round-off at the upper face
+    return w;
+  }
+};
+
+}  // namespace sphdem

@@ -1,0 +1,56 @@
+#pragma once
+// Cell-linked list: particles binned into cubic cells of side >= the cut-off and
+// stored sorted by cell (positions copied contiguously), so a neighbour query
+// walks 3x3 contiguous runs of cells. Periodicity is handled by halo copies, so
+// the cell grid simply spans the bounding box of the points it is given.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sphdem {
+
+class CellList {
+ public:
+  // Bins points 0..n-1. cell_size must be >= the largest cut-off queried.
+  void build(const double* x, const double* y, const double* z, std::size_t n, double cell_size);
+
+  // Calls f(j, dx, dy, dz, r2) for every binned point j with r2 = |p - x_j|^2 < rc2,
+  // where (dx,dy,dz) = p - x_j. rc must not exceed the cell size.
+  template <class F>
+  void for_each_neighbour(double px, double py, double pz, double rc2, F&& f) const {
+    if (n_ == 0) return;
+    const int cx = clampi(static_cast<int>(std::floor((px - lo_[0]) * inv_)), nc_[0]);
+    const int cy = clampi(static_cast<int>(std::floor((py - lo_[1]) * inv_)), nc_[1]);
+    const int cz = clampi(static_cast<int>(std::floor((pz - lo_[2]) * inv_)), nc_[2]);
+    const int x0 = std::max(cx - 1, 0), x1 = std::min(cx + 1, nc_[0] - 1);
+    for (int iz = std::max(cz - 1, 0); iz <= std::min(cz + 1, nc_[2] - 1); ++iz) {
+      for (int iy = std::max(cy - 1, 0); iy <= std::min(cy + 1, nc_[1] - 1); ++iy) {
+        const std::size_t row = (static_cast<std::size_t>(iz) * nc_[1] + iy) * nc_[0];
+        const std::uint32_t b = start_[row + x0], e = start_[row + x1 + 1];
+        for (std::uint32_t k = b; k < e; ++k) {
+          const double dx = px - xs_[k], dy = py - ys_[k], dz = pz - zs_[k];
+          const double r2 = dx * dx + dy * dy + dz * dz;
+          if (r2 < rc2) f(index_[k], dx, dy, dz, r2);
+        }
+      }
+    }
+  }
+
+  double cell_size() const { return cell_; }
+  std::size_t size() const { return n_; }
+  // Binned indices in cell order (used to sort owned particles for locality).
+  const std::vector<std::uint32_t>& order() const { return index_; }
+
+ private:
+  static int clampi(int c, int n) { return c < 0 ? 0 : (c >= n ? n - 1 : c); }
+  std::size_t n_ = 0;
+  double cell_ = 0, inv_ = 0;
+  double lo_[3] = {0, 0, 0};
+  int nc_[3] = {1, 1, 1};
+  std::vector<std::uint32_t> start_, index_, cell_of_;
+  std::vector<double> xs_, ys_, zs_;
+};
+
+}  // namespace sphdem

@@ -1,0 +1,49 @@
+#pragma once
+// Halo copies ("ghosts") of owned particles for periodic images.
+//
+// Every pass loops over owned particles and reads neighbours among owned + ghost
+// particles, exactly as it will once MPI halos exist: a ghost is an owned particle
+// seen through a periodic face (later: or through a rank boundary). The plan is
+// built once per neighbour rebuild and applied per field (Cabana's Halo idea).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "domain/box.hpp"
+
+namespace sphdem {
+
+class PeriodicHalo {
+ public:
+  // Builds the ghost list: every owned particle within `width` of a periodic face
+  // gets an image on the far side (edges and corners included). Requires
+  // width <= box length / 2 on each periodic axis.
+  void build(const Box& box, double width, const double* x, const double* y, const double* z,
+             std::size_t n_owned);
+
+  std::size_t n_owned() const { return n_owned_; }
+  std::size_t n_ghost() const { return source_.size(); }
+  double width() const { return width_; }
+
+  // Writes ghost positions (source position + periodic shift) after the owned ones.
+  void fill_positions(double* x, double* y, double* z) const;
+  // Copies a per-particle field from each ghost's owned source.
+  template <class T>
+  void fill(T* field) const {
+    const std::size_t n = source_.size();
+    for (std::size_t g = 0; g < n; ++g) field[n_owned_ + g] = field[source_[g]];
+  }
+  template <class Vec>
+  void fill(Vec& field) const {
+    fill(field.data());
+  }
+  const std::vector<std::uint32_t>& source() const { return source_; }
+
+ private:
+  std::size_t n_owned_ = 0;
+  double width_ = 0;
+  std::vector<std::uint32_t> source_;  // owned index of each ghost
+  std::vector<double> sx_, sy_, sz_;   // shift added to the source position
+};
+
+}  // namespace sphdem

@@ -1,0 +1,98 @@
+#include "run/initial_state.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace sphdem {
+
+BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g, double d) {
+  BlockLattice L;
+  const double V = M_PI * d * d * d / 6.0;
+  const double a = std::cbrt(V / (1.0 - g.voidage));
+  for (int k = 0; k < 2; ++k) {
+    const double span = g.hi[k] - g.lo[k];
+    const bool full = sc.box.periodic[k] && std::abs(span - sc.box.length(k)) < 1e-12 * sc.box.length(k);
+    L.count[k] = full ? std::max(1, static_cast<int>(std::lround(span / a)))
+                      : static_cast<int>(std::floor(span / a + 1e-9));
+    L.spacing[k] = full ? span / L.count[k] : a;
+  }
+  L.spacing[2] = V / ((1.0 - g.voidage) * L.spacing[0] * L.spacing[1]);
+  L.count[2] = static_cast<int>(std::floor((g.hi[2] - g.lo[2]) / L.spacing[2] + 1e-9));
+  for (int k = 0; k < 3; ++k) {
+    const double span = g.hi[k] - g.lo[k];
+    L.origin[k] = g.lo[k] + 0.5 * (span - L.count[k] * L.spacing[k]) + 0.5 * L.spacing[k];
+  }
+  L.voidage = 1.0 - V / (L.spacing[0] * L.spacing[1] * L.spacing[2]);
+  return L;
+}
+
+void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
+  const double dx = sc.fluid.spacing;
+  const int nx = static_cast<int>(std::lround(sc.box.length(0) / dx));
+  const int ny = static_cast<int>(std::lround(sc.box.length(1) / dx));
+  const int nz = static_cast<int>(std::floor(sc.fill_height() / dx + 1e-6));
+  const int nw = sc.fluid.wall_layers;
+  const std::size_t n = static_cast<std::size_t>(nx) * ny * (nz + nw);
+  f.resize(n);
+  f.n_owned = n;
+  std::size_t k = 0;
+  for (int iz = -nw; iz < nz; ++iz)
+    for (int iy = 0; iy < ny; ++iy)
+      for (int ix = 0; ix < nx; ++ix, ++k) {
+        f.x[k] = (ix + 0.5) * dx;
+        f.y[k] = (iy + 0.5) * dx;
+        f.z[k] = (iz + 0.5) * dx;
+        f.kind[k] = iz < 0 ? kWall : kFluid;
+        f.id[k] = static_cast<std::int64_t>(k);
+      }
+
+  s.resize(0);
+  int group_id = 0;
+  for (std::size_t gi = 0; gi < sc.particles.size(); ++gi) {
+    const ParticleGroupSpec& g = sc.particles[gi];
+    const int sp = sc.species_index(g.species);
+    const SpeciesSpec& spec = sc.species[sp];
+    const double r = 0.5 * spec.diameter;
+    const double m = spec.density * M_PI * spec.diameter * spec.diameter * spec.diameter / 6.0;
+    const int rigid = g.rigid ? group_id++ : -1;
+    auto add = [&](double x, double y, double z) {
+      const std::size_t i = s.size();
+      s.resize(i + 1);
+      s.x[i] = x;
+      s.y[i] = y;
+      s.z[i] = z;
+      s.vx[i] = g.velocity[0];
+      s.vy[i] = g.velocity[1];
+      s.vz[i] = g.velocity[2];
+      s.radius[i] = r;
+      s.mass[i] = m;
+      s.species[i] = static_cast<std::uint16_t>(sp);
+      s.rigid_group[i] = rigid;
+      s.id[i] = static_cast<std::int64_t>(i);
+    };
+    if (g.kind == ParticleGroupSpec::Kind::kSingle) {
+      add(g.position[0], g.position[1], g.position[2]);
+      continue;
+    }
+    const BlockLattice L = block_lattice(sc, g, spec.diameter);
+    for (int c = 0; c < 3; ++c) {
+      if (L.count[c] < 1)
+        throw SceneError(fmt::format("{}: key 'particles.{}': the region holds no lattice site along "
+                                     "axis {} (spacing {} m)", sc.source, gi, "xyz"[c], L.spacing[c]));
+      if (L.spacing[c] < spec.diameter * (1.0 - 1e-9))
+        throw SceneError(fmt::format("{}: key 'particles.{}.voidage': lattice spacing {} m along {} is "
+                                     "below the diameter {} m; raise the voidage or widen the region",
+                                     sc.source, gi, L.spacing[c], "xyz"[c], spec.diameter));
+    }
+    if (L.origin[2] - 0.5 * L.spacing[2] < 0 || L.origin[2] < r)
+      throw SceneError(fmt::format("{}: key 'particles.{}.min': the block cuts the bottom wall", sc.source, gi));
+    for (int iz = 0; iz < L.count[2]; ++iz)
+      for (int iy = 0; iy < L.count[1]; ++iy)
+        for (int ix = 0; ix < L.count[0]; ++ix)
+          add(L.origin[0] + ix * L.spacing[0], L.origin[1] + iy * L.spacing[1], L.origin[2] + iz * L.spacing[2]);
+  }
+  s.n_owned = s.size();
+}
+
+}  // namespace sphdem

@@ -1,0 +1,24 @@
+#pragma once
+#include "dem/dem_particles.hpp"
+#include "run/scene.hpp"
+#include "sph/fluid_particles.hpp"
+
+namespace sphdem {
+
+// Places the particles of a scene: the fluid on a simple-cubic lattice of spacing dx
+// filling [0, fill_height], the wall layers below z = 0 (thesis §4.2), and the spheres
+// of every particle group. Masses and densities of the fluid are set later, once the
+// voidage is known (Simulation). Throws SceneError for impossible geometry.
+void place_particles(const Scene& scene, FluidParticles& fluid, DemParticles& spheres);
+
+// Lattice spacing per axis and site count of a constant-porosity block (thesis §4.5):
+// a = (V_p / (1 - eps))^(1/3), adjusted to a whole number of sites on periodic axes
+// the block spans, with a_z chosen to keep the target voidage.
+struct BlockLattice {
+  std::array<double, 3> spacing{}, origin{};
+  std::array<int, 3> count{};
+  double voidage = 0;  // actual voidage of the lattice
+};
+BlockLattice block_lattice(const Scene& scene, const ParticleGroupSpec& group, double diameter);
+
+}  // namespace sphdem

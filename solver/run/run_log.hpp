@@ -1,0 +1,22 @@
+#pragma once
+// DIR/log.csv: one row per log interval, flushed at once so that a run that fails
+// keeps every row it reached.
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "run/simulation.hpp"
+
+namespace sphdem {
+
+class RunLog {
+ public:
+  RunLog(const std::string& path, const std::vector<SpeciesSpec>& species);
+  void write(const Diagnostics& d);
+  static std::vector<std::string> columns(const std::vector<SpeciesSpec>& species);
+
+ private:
+  std::ofstream out_;
+};
+
+}  // namespace sphdem

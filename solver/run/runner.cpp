@@ -1,0 +1,130 @@
+#include "run/runner.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "run/run_log.hpp"
+#include "run/simulation.hpp"
+
+namespace sphdem {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string format_duration(double s) {
+  if (!std::isfinite(s)) return "?";
+  if (s < 120) return fmt::format("{:.0f} s", s);
+  if (s < 7200) return fmt::format("{:.1f} min", s / 60);
+  return fmt::format("{:.1f} h", s / 3600);
+}
+
+template <class V>
+std::size_t bytes_of(V& container) {
+  std::size_t b = 0;
+  container.for_each_double([&](const char*, auto& v) { b += v.capacity() * sizeof(double); });
+  return b;
+}
+}  // namespace
+
+RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
+  namespace fs = std::filesystem;
+  fs::create_directories(opt.out_dir);
+  {
+    std::ofstream cy(fs::path(opt.out_dir) / "case.yaml");
+    cy << scene_to_yaml(scene);
+  }
+  std::ostream* out = opt.progress;
+  const auto t_start = Clock::now();
+  Simulation sim(scene);
+  if (out)
+    *out << fmt::format("sphdem: {} fluid + {} wall SPH particles, {} spheres; relaxing {} steps\n",
+                        sim.fluid_count(), sim.wall_count(), sim.spheres().n_owned, scene.startup.relax_steps)
+         << std::flush;
+  sim.relax();
+  RunLog log((fs::path(opt.out_dir) / "log.csv").string(), scene.species);
+  log.write(sim.diagnostics());
+  if (opt.on_log) opt.on_log(sim);
+
+  const auto t_loop = Clock::now();
+  auto t_progress = t_loop;
+  double next_log = scene.output.log_interval;
+  double dem_sphere_steps = 0;
+  const double end = scene.time.end;
+  while (sim.time() < end * (1.0 - 1e-12)) {
+    sim.step();
+    dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
+    if (sim.time() >= next_log * (1.0 - 1e-9) || sim.time() >= end * (1.0 - 1e-12)) {
+      log.write(sim.diagnostics());
+      if (opt.on_log) opt.on_log(sim);
+      while (next_log <= sim.time() * (1.0 + 1e-9)) next_log += scene.output.log_interval;
+    }
+    if (out && since(t_progress) >= scene.output.progress_interval) {
+      t_progress = Clock::now();
+      const double wall = since(t_loop);
+      const double rate = sim.step_count() / wall;
+      const double eta = wall * (end - sim.time()) / std::max(sim.time(), 1e-30);
+      *out << fmt::format("  t = {:.4e} / {:.4e} s ({:4.1f} %)  step {}  {:.1f} steps/s  dt = {:.3e} s  ETA {}\n",
+                          sim.time(), end, 100.0 * sim.time() / end, sim.step_count(), rate, sim.dt_sph(),
+                          format_duration(eta))
+           << std::flush;
+    }
+  }
+  RunSummary r;
+  r.steps = sim.step_count();
+  r.simulated_time = sim.time();
+  r.wall_seconds = since(t_start);
+  const double loop = since(t_loop);
+  r.fluid_particle_steps_per_second = static_cast<double>(sim.fluid().n_owned) * r.steps / loop;
+  r.sphere_particle_steps_per_second = dem_sphere_steps / loop;
+  if (out) {
+    const auto& t = sim.timers().seconds;
+    double total = 0;
+    for (double x : t) total += x;
+    std::string parts;
+    for (int k = 0; k < PassTimers::kCount; ++k)
+      parts += fmt::format(" {} {:.0f}%", PassTimers::kNames[k], 100.0 * t[k] / std::max(total, 1e-30));
+    *out << "sphdem: time per pass:" << parts << "\n";
+  }
+  if (out)
+    *out << fmt::format("sphdem: done, {} steps to t = {:.4e} s in {} ({:.3g} SPH particle-steps/s)\n", r.steps,
+                        r.simulated_time, format_duration(r.wall_seconds), r.fluid_particle_steps_per_second);
+  return r;
+}
+
+std::string describe_scene(const Scene& sc) {
+  Simulation sim(sc);
+  std::string s;
+  s += fmt::format("scene            {} ({})\n", sc.name, sc.source);
+  s += fmt::format("domain           {} x {} x {} m, periodic in x and y, wall at z = 0, fluid to z = {} m\n",
+                   sc.box.length(0), sc.box.length(1), sc.box.length(2), sc.fill_height());
+  s += fmt::format("SPH particles    {} fluid + {} wall ({} layers), spacing dx = {} m, h = {:.4g} m\n",
+                   sim.fluid_count(), sim.wall_count(), sc.fluid.wall_layers, sc.fluid.spacing,
+                   sc.fluid.smoothing_factor * sc.fluid.spacing);
+  const auto& sp = sim.spheres();
+  std::vector<std::size_t> count(sc.species.size(), 0);
+  for (std::size_t j = 0; j < sp.n_owned; ++j) ++count[sp.species[j]];
+  for (std::size_t k = 0; k < sc.species.size(); ++k)
+    s += fmt::format("species {:<8} {} spheres, d = {} m, rho = {} kg/m^3, h/d = dx/d = {:.3g}\n",
+                     sc.species[k].name, count[k], sc.species[k].diameter, sc.species[k].density,
+                     sc.fluid.spacing / sc.species[k].diameter);
+  s += fmt::format("fluid            rho_f = {} kg/m^3, mu = {} Pa s, c0 = {:.4g} m/s, B = {:.4g} Pa, u_m = {:.4g} m/s\n",
+                   sc.fluid.density, sc.fluid.viscosity, sc.fluid.sound_speed, sim.eos().B, sc.fluid.expected_speed);
+  s += fmt::format("drag law         {}\n", drag::drag_law_name(sc.drag));
+  const double dt = sim.dt_sph();
+  const int sub = sp.n_owned == 0 ? 0 : 2 * std::max(1, static_cast<int>(std::ceil(0.5 * dt / sim.dt_dem_max())));
+  s += fmt::format("contact time     t_c = {:.4g} s (k = {} N/m)\n", sim.contact_time(), sc.contact.normal.k);
+  s += fmt::format("time steps       dt_SPH = {:.4g} s (CFL {}), dt_DEM = {:.4g} s, {} DEM sub-steps per SPH step\n",
+                   dt, sc.time.cfl, sub > 0 ? dt / sub : 0.0, sub);
+  s += fmt::format("run              {} relaxation steps, then t = 0 .. {} s: about {:.0f} SPH steps\n",
+                   sc.startup.relax_steps, sc.time.end, sc.time.end / dt);
+  const double mb = (bytes_of(sim.fluid()) + bytes_of(sim.spheres())) / 1048576.0;
+  s += fmt::format("memory           {:.1f} MiB of particle arrays (halo copies included)\n", mb);
+  return s;
+}
+
+}  // namespace sphdem

@@ -1,0 +1,100 @@
+#pragma once
+// A scene: every parameter of a run, in SI units, as read from cases/*.yaml.
+// Plain data; the loader (scene_loader.cpp) fills and validates it.
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "coupling/drag_laws.hpp"
+#include "dem/contact_model.hpp"
+#include "domain/box.hpp"
+
+namespace sphdem {
+
+struct FluidSpec {
+  double density = 1000.0;     // rho_f (kg/m^3)
+  double viscosity = 8.9e-4;   // mu (Pa s)
+  double spacing = 2.0e-4;     // initial lattice spacing dx (m)
+  double smoothing_factor = 1.5;  // sigma in h = sigma (m/rho)^(1/3), eq. 2.65
+  double fill_height = 0.0;    // free-surface height (m); 0 = the box height
+  double expected_speed = 0.0; // u_m (m/s) for B, eq. 2.64; 0 = largest Stokes speed
+  double sound_speed = 0.0;    // c0 (m/s); 0 = 10 max(u_m, sqrt(2 g H)) (physics.md §1)
+  double alpha_artificial = 0.02;  // Monaghan alpha on approaching pairs only
+  int gamma = 7;
+  int wall_layers = 3;
+};
+
+struct SpeciesSpec {
+  std::string name;
+  double diameter = 0.0;  // (m)
+  double density = 0.0;   // (kg/m^3)
+};
+
+struct ParticleGroupSpec {
+  enum class Kind { kSingle, kLattice };
+  Kind kind = Kind::kSingle;
+  std::string species;
+  std::array<double, 3> position{0, 0, 0};  // single: centre
+  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};  // lattice: region
+  double voidage = 0.9;                     // lattice: target voidage of the block
+  std::array<double, 3> velocity{0, 0, 0};
+  bool rigid = false;  // constant-porosity block: moves rigidly (thesis §4.5)
+};
+
+struct ContactSpec {
+  LinearSpringDashpot normal{10.0, 0.0, -1.0, false};
+  double skin = 0.3;  // Verlet skin as a fraction of the largest diameter
+};
+
+struct TimeSpec {
+  double end = 0.02;               // simulated time after release (s)
+  double cfl = 0.25;               // dt_SPH <= cfl h / v_sig (eq. 3.5 with support 2h)
+  double dem_steps_per_contact = 20;  // dt_DEM <= t_c / this (eq. 3.7)
+  double max_dt_sph = 1e-3;        // upper cap (s)
+};
+
+struct StartupSpec {
+  int relax_steps = 200;     // fluid-only steps with spheres held, before t = 0
+  double damping = 0.02;     // fraction of fluid velocity removed per relaxation step
+};
+
+struct OutputSpec {
+  double log_interval = 0.0;       // (s); 0 = end / 200
+  double progress_interval = 2.0;  // wall-clock seconds between terminal progress lines
+};
+
+struct Scene {
+  std::string name = "scene";
+  std::string description;
+  std::string source = "<defaults>";  // file it came from (for error messages)
+  Box box;
+  std::array<double, 3> gravity{0, 0, -9.81};
+  FluidSpec fluid;
+  std::vector<SpeciesSpec> species;
+  std::vector<ParticleGroupSpec> particles;
+  ContactSpec contact;
+  drag::DragLaw drag = drag::Stokes{};
+  double voidage_floor = 0.3;
+  TimeSpec time;
+  StartupSpec startup;
+  OutputSpec output;
+
+  double fill_height() const { return fluid.fill_height > 0 ? fluid.fill_height : box.length(2); }
+  int species_index(const std::string& name) const;
+};
+
+// A bad scene: names the file, the key and what is allowed.
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Reads and validates a scene; overrides are "key.path=value" (YAML value syntax).
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+Scene load_scene_text(const std::string& yaml, const std::string& source_name,
+                      const std::vector<std::string>& overrides = {});
+// The fully resolved scene as YAML (written to DIR/case.yaml).
+std::string scene_to_yaml(const Scene& scene);
+
+}  // namespace sphdem

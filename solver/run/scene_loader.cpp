@@ -1,0 +1,417 @@
+// Scene files: strict YAML reading (unknown keys, wrong types and out-of-range values
+// are errors naming the file, the key and what is allowed), --set overrides, and the
+// resolved scene written back as YAML.
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "run/scene.hpp"
+
+namespace sphdem {
+
+int Scene::species_index(const std::string& n) const {
+  for (std::size_t s = 0; s < species.size(); ++s)
+    if (species[s].name == n) return static_cast<int>(s);
+  return -1;
+}
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Reads one YAML map, remembering which keys were asked for so that any other key
+// is reported as unknown, with the list of allowed ones.
+class MapReader {
+ public:
+  MapReader(const YAML::Node& node, std::string path, const std::string& file)
+      : node_(node), path_(std::move(path)), file_(file) {
+    if (node_ && !node_.IsMap()) fail(path_, "must be a map of keys");
+  }
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw SceneError(fmt::format("{}: key '{}': {}", file_, key.empty() ? "<top>" : key, what));
+  }
+  std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
+  bool has(const std::string& k) {
+    allowed_.insert(k);
+    return node_ && node_[k];
+  }
+  YAML::Node child(const std::string& k) {
+    allowed_.insert(k);
+    return node_ ? node_[k] : YAML::Node();
+  }
+
+  // A number in [lo, hi] (open ends when lo_open/hi_open).
+  double number(const std::string& k, double def, double lo, double hi, bool lo_open = false,
+                bool hi_open = false) {
+    double v = def;
+    if (has(k)) v = scalar<double>(k, "a number");
+    const bool bad = std::isnan(v) || (lo_open ? v <= lo : v < lo) || (hi_open ? v >= hi : v > hi);
+    if (bad)
+      fail(key(k), fmt::format("must be in {}{}, {}{} (got {})", lo_open ? "(" : "[", lo,
+                               hi, hi_open ? ")" : "]", v));
+    return v;
+  }
+  int integer(const std::string& k, int def, int lo, int hi) {
+    int v = def;
+    if (has(k)) v = scalar<int>(k, "a whole number");
+    if (v < lo || v > hi) fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
+    return v;
+  }
+  bool boolean(const std::string& k, bool def) { return has(k) ? scalar<bool>(k, "true or false") : def; }
+  std::string text(const std::string& k, const std::string& def) {
+    return has(k) ? scalar<std::string>(k, "a string") : def;
+  }
+  std::string choice(const std::string& k, const std::string& def, const std::vector<std::string>& allowed) {
+    const std::string v = text(k, def);
+    if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+      fail(key(k), fmt::format("must be one of: {} (got '{}')", fmt::join(allowed, ", "), v));
+    return v;
+  }
+  std::array<double, 3> vec3(const std::string& k, std::array<double, 3> def) {
+    if (!has(k)) return def;
+    const YAML::Node n = node_[k];
+    if (!n.IsSequence() || n.size() != 3) fail(key(k), "must be a list of 3 numbers [x, y, z]");
+    std::array<double, 3> v{};
+    for (int d = 0; d < 3; ++d) {
+      try {
+        v[d] = n[d].as<double>();
+      } catch (const YAML::Exception&) {
+        fail(key(k), "must be a list of 3 numbers [x, y, z]");
+      }
+      if (!std::isfinite(v[d])) fail(key(k), "must be finite numbers");
+    }
+    return v;
+  }
+  // Reports keys that were never asked for.
+  void finish() const {
+    if (!node_) return;
+    for (const auto& kv : node_) {
+      const std::string k = kv.first.as<std::string>();
+      if (!allowed_.count(k))
+        fail(key(k), fmt::format("unknown key; allowed here: {}", fmt::join(allowed_, ", ")));
+    }
+  }
+
+ private:
+  template <class T>
+  T scalar(const std::string& k, const char* what) {
+    const YAML::Node n = node_[k];
+    if (!n.IsScalar()) fail(key(k), fmt::format("must be {}", what));
+    try {
+      return n.as<T>();
+    } catch (const YAML::Exception&) {
+      fail(key(k), fmt::format("must be {} (got '{}')", what, n.Scalar()));
+    }
+  }
+  YAML::Node node_;
+  std::string path_;
+  const std::string& file_;
+  std::set<std::string> allowed_;
+};
+
+void apply_override(YAML::Node root, const std::string& assignment, const std::string& file) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw SceneError(fmt::format("{}: --set '{}': expected key.path=value", file, assignment));
+  const std::string path = assignment.substr(0, eq);
+  YAML::Node value;
+  try {
+    value = YAML::Load(assignment.substr(eq + 1));
+  } catch (const YAML::Exception& e) {
+    throw SceneError(fmt::format("{}: --set '{}': value is not valid YAML ({})", file, assignment, e.what()));
+  }
+  std::vector<std::string> parts;
+  std::stringstream ss(path);
+  for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+  YAML::Node node = root;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const bool last = k + 1 == parts.size();
+    if (node.IsSequence()) {
+      std::size_t idx = 0;
+      try {
+        idx = std::stoul(parts[k]);
+      } catch (...) {
+        idx = node.size();
+      }
+      if (idx >= node.size())
+        throw SceneError(fmt::format("{}: --set '{}': '{}' must be an index in [0, {})", file,
+                                     assignment, parts[k], node.size()));
+      if (last) node[idx] = value;
+      else node.reset(node[idx]);
+    } else {
+      if (last) node[parts[k]] = value;
+      else {
+        if (!node[parts[k]]) node[parts[k]] = YAML::Node(YAML::NodeType::Map);
+        node.reset(node[parts[k]]);
+      }
+    }
+  }
+}
+
+double stokes_speed(const SpeciesSpec& s, const FluidSpec& f, double g) {
+  return std::abs(s.density - f.density) * g * s.diameter * s.diameter / (18.0 * f.viscosity);
+}
+
+Scene parse(const YAML::Node& root, const std::string& file) {
+  Scene sc;
+  sc.source = file;
+  MapReader top(root, "", file);
+  sc.name = top.text("name", "scene");
+  sc.description = top.text("description", "");
+
+  {
+    MapReader r(top.child("domain"), "domain", file);
+    const auto size = r.vec3("size", {0.004, 0.004, 0.006});
+    for (int d = 0; d < 3; ++d)
+      if (size[d] <= 0) r.fail("domain.size", "all three lengths must be > 0 (m)");
+    sc.box.lo = {0, 0, 0};
+    sc.box.hi = size;
+    sc.box.periodic = {true, true, false};
+    r.finish();
+  }
+  sc.gravity = top.vec3("gravity", {0, 0, -9.81});
+
+  {
+    MapReader r(top.child("fluid"), "fluid", file);
+    FluidSpec& f = sc.fluid;
+    f.density = r.number("density", f.density, 0, kInf, true);
+    f.viscosity = r.number("viscosity", f.viscosity, 0, kInf, true);
+    f.spacing = r.number("spacing", f.spacing, 0, kInf, true);
+    f.smoothing_factor = r.number("smoothing_factor", f.smoothing_factor, 1.0, 3.0);
+    f.fill_height = r.number("fill_height", 0.0, 0.0, sc.box.length(2));
+    f.expected_speed = r.number("expected_speed", 0.0, 0.0, kInf);
+    f.sound_speed = r.number("sound_speed", 0.0, 0.0, kInf);
+    f.alpha_artificial = r.number("alpha_artificial", f.alpha_artificial, 0.0, 2.0);
+    f.gamma = r.integer("gamma", f.gamma, 1, 7);
+    const int min_layers = static_cast<int>(std::ceil(2.0 * f.smoothing_factor - 1e-9));
+    f.wall_layers = r.integer("wall_layers", std::max(3, min_layers), min_layers, 8);
+    r.finish();
+    for (int d = 0; d < 2; ++d) {
+      const double halo = 2.4 * f.smoothing_factor * f.spacing;
+      if (sc.box.length(d) < 2.0 * halo)
+        r.fail("domain.size", fmt::format("the periodic width {} m must be >= 4.8 smoothing_factor "
+                                          "spacing = {} m (twice the kernel support with margin)",
+                                          sc.box.length(d), 2.0 * halo));
+      const double n = sc.box.length(d) / f.spacing;
+      if (std::abs(n - std::round(n)) > 1e-6)
+        r.fail("fluid.spacing", fmt::format("must divide the periodic width {} m into a whole number "
+                                            "of layers (got {} layers)", sc.box.length(d), n));
+    }
+    if (sc.fill_height() < 3 * f.spacing)
+      r.fail("fluid.fill_height", "must hold at least 3 fluid layers");
+  }
+
+  {
+    const YAML::Node list = top.child("species");
+    if (list && !list.IsSequence()) top.fail("species", "must be a list of {name, diameter, density}");
+    for (std::size_t s = 0; list && s < list.size(); ++s) {
+      MapReader r(list[s], fmt::format("species.{}", s), file);
+      SpeciesSpec sp;
+      sp.name = r.text("name", "");
+      if (sp.name.empty() || sp.name.find_first_of(":, ") != std::string::npos)
+        r.fail(r.key("name"), "must be a non-empty name without ':', ',' or spaces");
+      if (sc.species_index(sp.name) >= 0) r.fail(r.key("name"), "duplicate species name '" + sp.name + "'");
+      sp.diameter = r.number("diameter", 0.0, 0.0, kInf, true);
+      sp.density = r.number("density", 0.0, 0.0, kInf, true);
+      r.finish();
+      sc.species.push_back(sp);
+    }
+  }
+
+  {
+    const YAML::Node list = top.child("particles");
+    if (list && !list.IsSequence()) top.fail("particles", "must be a list of particle groups");
+    for (std::size_t gi = 0; list && gi < list.size(); ++gi) {
+      MapReader r(list[gi], fmt::format("particles.{}", gi), file);
+      ParticleGroupSpec g;
+      const std::string type = r.choice("type", "single", {"single", "lattice"});
+      g.kind = type == "single" ? ParticleGroupSpec::Kind::kSingle : ParticleGroupSpec::Kind::kLattice;
+      g.species = r.text("species", "");
+      const int s = sc.species_index(g.species);
+      if (s < 0) r.fail(r.key("species"), fmt::format("'{}' is not a species listed under 'species'", g.species));
+      const double radius = 0.5 * sc.species[s].diameter;
+      g.velocity = r.vec3("velocity", {0, 0, 0});
+      g.rigid = r.boolean("rigid", false);
+      if (g.kind == ParticleGroupSpec::Kind::kSingle) {
+        g.position = r.vec3("position", {0.5 * sc.box.hi[0], 0.5 * sc.box.hi[1], 0.5 * sc.box.hi[2]});
+        for (int d = 0; d < 3; ++d)
+          if (g.position[d] < sc.box.lo[d] || g.position[d] > sc.box.hi[d])
+            r.fail(r.key("position"), "must lie inside domain.size");
+        if (g.position[2] < radius) r.fail(r.key("position"), "the sphere would cut the bottom wall (z < radius)");
+      } else {
+        g.lo = r.vec3("min", sc.box.lo);
+        g.hi = r.vec3("max", sc.box.hi);
+        for (int d = 0; d < 3; ++d)
+          if (g.lo[d] < sc.box.lo[d] || g.hi[d] > sc.box.hi[d] || g.hi[d] <= g.lo[d])
+            r.fail(r.key(d == 0 ? "min" : "max"), "region must satisfy 0 <= min < max <= domain.size");
+        g.voidage = r.number("voidage", g.voidage, 1.0 - M_PI / 6.0, 1.0, false, true);
+      }
+      r.finish();
+      sc.particles.push_back(g);
+    }
+  }
+
+  {
+    MapReader r(top.child("contact"), "contact", file);
+    r.choice("model", "linear_spring_dashpot", {"linear_spring_dashpot"});
+    LinearSpringDashpot& n = sc.contact.normal;
+    n.k = r.number("stiffness", n.k, 0.0, kInf, true);
+    const bool has_damping = r.has("damping"), has_e = r.has("restitution");
+    if (has_damping && has_e) r.fail("contact.restitution", "give either 'damping' (kg/s) or 'restitution', not both");
+    n.beta = r.number("damping", 0.0, 0.0, kInf);
+    n.restitution = has_e ? r.number("restitution", 1.0, 0.0, 1.0, true) : -1.0;
+    n.clip_attraction = r.boolean("clip_attraction", false);
+    sc.contact.skin = r.number("skin", sc.contact.skin, 0.0, 2.0);
+    r.finish();
+  }
+  {
+    MapReader r(top.child("drag"), "drag", file);
+    const std::string law = r.choice("law", "stokes", {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)});
+    drag::drag_law_from_name(law, sc.drag);
+    r.finish();
+  }
+  {
+    MapReader r(top.child("coupling"), "coupling", file);
+    sc.voidage_floor = r.number("voidage_floor", sc.voidage_floor, 0.05, 0.95);
+    r.finish();
+  }
+  {
+    MapReader r(top.child("time"), "time", file);
+    sc.time.end = r.number("end", sc.time.end, 0.0, kInf, true);
+    sc.time.cfl = r.number("cfl", sc.time.cfl, 0.0, 1.0, true);
+    sc.time.dem_steps_per_contact = r.number("dem_steps_per_contact", sc.time.dem_steps_per_contact, 5.0, 1000.0);
+    sc.time.max_dt_sph = r.number("max_dt_sph", sc.time.max_dt_sph, 0.0, kInf, true);
+    r.finish();
+  }
+  {
+    MapReader r(top.child("startup"), "startup", file);
+    sc.startup.relax_steps = r.integer("relax_steps", sc.startup.relax_steps, 0, 1000000);
+    sc.startup.damping = r.number("damping", sc.startup.damping, 0.0, 1.0, false, true);
+    r.finish();
+  }
+  {
+    MapReader r(top.child("output"), "output", file);
+    sc.output.log_interval = r.number("log_interval", 0.0, 0.0, kInf);
+    sc.output.progress_interval = r.number("progress_interval", sc.output.progress_interval, 0.0, kInf);
+    r.finish();
+  }
+  top.finish();
+
+  // Resolve the automatic values, so case.yaml records what actually ran.
+  const double g = std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
+                             sc.gravity[2] * sc.gravity[2]);
+  if (sc.fluid.fill_height <= 0) sc.fluid.fill_height = sc.box.length(2);
+  if (sc.fluid.expected_speed <= 0) {
+    double u = 0.0;
+    for (const auto& s : sc.species) u = std::max(u, stokes_speed(s, sc.fluid, g));
+    sc.fluid.expected_speed = u;
+  }
+  if (sc.fluid.sound_speed <= 0) {
+    const double um = std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.fill_height()));
+    sc.fluid.sound_speed = 10.0 * std::max(um, 1e-6);
+  }
+  if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
+  return sc;
+}
+
+}  // namespace
+
+Scene load_scene_text(const std::string& yaml, const std::string& source_name,
+                      const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(fmt::format("{}: not valid YAML: {}", source_name, e.what()));
+  }
+  if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  for (const auto& o : overrides) apply_override(root, o, source_name);
+  return parse(root, source_name);
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(fmt::format("{}: cannot open the scene file", path));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return load_scene_text(ss.str(), path, overrides);
+}
+
+std::string scene_to_yaml(const Scene& sc) {
+  YAML::Emitter e;
+  e.SetDoublePrecision(12);
+  auto vec = [&](const std::array<double, 3>& v) {
+    e << YAML::Flow << YAML::BeginSeq << v[0] << v[1] << v[2] << YAML::EndSeq;
+  };
+  e << YAML::BeginMap;
+  e << YAML::Key << "name" << YAML::Value << sc.name;
+  e << YAML::Key << "description" << YAML::Value << sc.description;
+  e << YAML::Key << "domain" << YAML::Value << YAML::BeginMap << YAML::Key << "size" << YAML::Value;
+  vec(sc.box.hi);
+  e << YAML::EndMap;
+  e << YAML::Key << "gravity" << YAML::Value;
+  vec(sc.gravity);
+  const FluidSpec& f = sc.fluid;
+  e << YAML::Key << "fluid" << YAML::Value << YAML::BeginMap;
+  e << YAML::Key << "density" << YAML::Value << f.density << YAML::Key << "viscosity" << YAML::Value << f.viscosity;
+  e << YAML::Key << "spacing" << YAML::Value << f.spacing << YAML::Key << "smoothing_factor" << YAML::Value << f.smoothing_factor;
+  e << YAML::Key << "fill_height" << YAML::Value << f.fill_height << YAML::Key << "expected_speed" << YAML::Value << f.expected_speed;
+  e << YAML::Key << "sound_speed" << YAML::Value << f.sound_speed << YAML::Key << "alpha_artificial" << YAML::Value << f.alpha_artificial;
+  e << YAML::Key << "gamma" << YAML::Value << f.gamma << YAML::Key << "wall_layers" << YAML::Value << f.wall_layers;
+  e << YAML::EndMap;
+  e << YAML::Key << "species" << YAML::Value << YAML::BeginSeq;
+  for (const auto& s : sc.species)
+    e << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "diameter"
+      << YAML::Value << s.diameter << YAML::Key << "density" << YAML::Value << s.density << YAML::EndMap;
+  e << YAML::EndSeq;
+  e << YAML::Key << "particles" << YAML::Value << YAML::BeginSeq;
+  for (const auto& g : sc.particles) {
+    e << YAML::BeginMap;
+    const bool single = g.kind == ParticleGroupSpec::Kind::kSingle;
+    e << YAML::Key << "type" << YAML::Value << (single ? "single" : "lattice");
+    e << YAML::Key << "species" << YAML::Value << g.species;
+    if (single) {
+      e << YAML::Key << "position" << YAML::Value;
+      vec(g.position);
+    } else {
+      e << YAML::Key << "min" << YAML::Value;
+      vec(g.lo);
+      e << YAML::Key << "max" << YAML::Value;
+      vec(g.hi);
+      e << YAML::Key << "voidage" << YAML::Value << g.voidage;
+    }
+    e << YAML::Key << "velocity" << YAML::Value;
+    vec(g.velocity);
+    e << YAML::Key << "rigid" << YAML::Value << g.rigid << YAML::EndMap;
+  }
+  e << YAML::EndSeq;
+  const LinearSpringDashpot& n = sc.contact.normal;
+  e << YAML::Key << "contact" << YAML::Value << YAML::BeginMap << YAML::Key << "model" << YAML::Value
+    << "linear_spring_dashpot" << YAML::Key << "stiffness" << YAML::Value << n.k;
+  if (n.restitution > 0) e << YAML::Key << "restitution" << YAML::Value << n.restitution;
+  else e << YAML::Key << "damping" << YAML::Value << n.beta;
+  e << YAML::Key << "clip_attraction" << YAML::Value << n.clip_attraction << YAML::Key << "skin" << YAML::Value
+    << sc.contact.skin << YAML::EndMap;
+  e << YAML::Key << "drag" << YAML::Value << YAML::BeginMap << YAML::Key << "law" << YAML::Value
+    << drag::drag_law_name(sc.drag) << YAML::EndMap;
+  e << YAML::Key << "coupling" << YAML::Value << YAML::BeginMap << YAML::Key << "voidage_floor" << YAML::Value
+    << sc.voidage_floor << YAML::EndMap;
+  e << YAML::Key << "time" << YAML::Value << YAML::BeginMap << YAML::Key << "end" << YAML::Value << sc.time.end
+    << YAML::Key << "cfl" << YAML::Value << sc.time.cfl << YAML::Key << "dem_steps_per_contact" << YAML::Value
+    << sc.time.dem_steps_per_contact << YAML::Key << "max_dt_sph" << YAML::Value << sc.time.max_dt_sph << YAML::EndMap;
+  e << YAML::Key << "startup" << YAML::Value << YAML::BeginMap << YAML::Key << "relax_steps" << YAML::Value
+    << sc.startup.relax_steps << YAML::Key << "damping" << YAML::Value << sc.startup.damping << YAML::EndMap;
+  e << YAML::Key << "output" << YAML::Value << YAML::BeginMap << YAML::Key << "log_interval" << YAML::Value
+    << sc.output.log_interval << YAML::Key << "progress_interval" << YAML::Value << sc.output.progress_interval
+    << YAML::EndMap;
+  e << YAML::EndMap;
+  return std::string(e.c_str()) + "\n";
+}
+
+}  // namespace sphdem

@@ -1,0 +1,476 @@
+#include "run/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <variant>
+
+#include "coupling/fluid_force.hpp"
+#include "coupling/interpolation.hpp"
+#include "coupling/reaction.hpp"
+#include "coupling/voidage.hpp"
+#include "run/initial_state.hpp"
+#include "sph/density_rate.hpp"
+#include "sph/kernel.hpp"
+#include "sph/momentum.hpp"
+
+namespace sphdem {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Adds the time since `start` to one pass timer, and restarts it.
+struct Lap {
+  PassTimers& t;
+  Clock::time_point start = Clock::now();
+  void operator()(int pass) {
+    const auto now = Clock::now();
+    t.seconds[pass] += std::chrono::duration<double>(now - start).count();
+    start = now;
+  }
+};
+enum Pass { kIntegrate, kDem, kNeighbours, kVoidage, kDensity, kMomentum, kInterp, kReaction, kOther };
+
+// Margin on the largest kernel support when binning, so that h may grow a little
+// between rebuilds.
+constexpr double kCutoffMargin = 1.05;
+
+}  // namespace
+
+Simulation::Simulation(const Scene& scene) : scene_(scene) {
+  const FluidSpec& fs = scene_.fluid;
+  eos_ = TaitEquationOfState::from_sound_speed(fs.density, fs.sound_speed, fs.gamma);
+  drag_fluid_ = drag::Fluid{fs.density, fs.viscosity};
+  place_particles(scene_, fluid_, dem_);
+
+  // DEM time step: dt_DEM <= t_c / 20 over every pair of species and the wall (3.7),
+  // and well below the Stokes relaxation time m/(3 pi mu d) of the lightest sphere.
+  const LinearSpringDashpot& law = scene_.contact.normal;
+  t_contact_ = std::numeric_limits<double>::infinity();
+  double t_drag = std::numeric_limits<double>::infinity();
+  std::vector<double> masses;
+  for (const auto& sp : scene_.species) {
+    const double m = sp.density * M_PI * std::pow(sp.diameter, 3) / 6.0;
+    masses.push_back(m);
+    t_drag = std::min(t_drag, m / (3.0 * M_PI * fs.viscosity * sp.diameter));
+  }
+  for (std::size_t a = 0; a < masses.size(); ++a) {
+    auto consider = [&](double m12) {
+      const ContactClosedForm c(law.k, law.beta_for(m12), m12);
+      if (!(c.omega > 0))
+        throw SceneError(fmt::format("{}: key 'contact.damping': overdamped contact (eta >= omega0) "
+                                     "for species '{}'", scene_.source, scene_.species[a].name));
+      t_contact_ = std::min(t_contact_, c.contact_time());
+    };
+    consider(masses[a]);  // wall
+    for (std::size_t b = a; b < masses.size(); ++b) consider(masses[a] * masses[b] / (masses[a] + masses[b]));
+  }
+  dt_dem_max_ = std::min(t_contact_ / scene_.time.dem_steps_per_contact, 0.1 * t_drag);
+
+  n_groups_ = 0;
+  for (std::size_t i = 0; i < dem_.size(); ++i) n_groups_ = std::max(n_groups_, dem_.rigid_group[i] + 1);
+  group_fx_.assign(n_groups_, 0);
+  group_fy_.assign(n_groups_, 0);
+  group_fz_.assign(n_groups_, 0);
+  group_m_.assign(n_groups_, 0);
+
+  build_initial_state();
+}
+
+std::size_t Simulation::fluid_count() const {
+  return static_cast<std::size_t>(std::count(fluid_.kind.begin(), fluid_.kind.begin() + fluid_.n_owned, kFluid));
+}
+std::size_t Simulation::wall_count() const { return fluid_.n_owned - fluid_count(); }
+
+double Simulation::fluid_cutoff() const {
+  double hmax = 0;
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a) hmax = std::max(hmax, fluid_.h[a]);
+  return kernel::kSupport * hmax;
+}
+
+// Hydrostatic start (replaces most of the thesis' ~1000 relaxation steps): on the
+// lattice, m_a/rho_a = dx^3 exactly, and rho_a = eps_a rho0 (1 + rho0 g (H - z)/B)^(1/gamma)
+// is the Tait density of the hydrostatic pressure at the particle's voidage.
+void Simulation::build_initial_state() {
+  const double dx = scene_.fluid.spacing, dx3 = dx * dx * dx;
+  const double g = std::abs(scene_.gravity[2]);
+  const double H = scene_.fill_height();
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
+    fluid_.h[a] = scene_.fluid.smoothing_factor * dx;
+    fluid_.eps[a] = 1.0;
+  }
+  rebuild_neighbours();
+  voidage_clamped_ = compute_fluid_voidage(fluid_, dem_, dem_cells_, scene_.voidage_floor);
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
+    const double P = eos_.rho0 * g * (H - fluid_.z[a]);
+    fluid_.rho[a] = eos_.density(P, fluid_.eps[a]);
+    fluid_.mass[a] = fluid_.rho[a] * dx3;
+  }
+  refresh();
+  next_dt();
+}
+
+void Simulation::rebuild_neighbours() {
+  FluidParticles& f = fluid_;
+  const Box& box = scene_.box;
+  // Owned particles back into the box; halo copies of those near periodic faces.
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    f.x[a] = box.wrap(0, f.x[a]);
+    f.y[a] = box.wrap(1, f.y[a]);
+  }
+  cell_size_ = kCutoffMargin * fluid_cutoff();
+  f.resize(f.n_owned);
+  fluid_halo_.build(box, cell_size_, f.x.data(), f.y.data(), f.z.data(), f.n_owned);
+  f.resize(f.n_owned + fluid_halo_.n_ghost());
+  fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
+  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.rho, &f.eps}) fluid_halo_.fill(*v);
+  fluid_halo_.fill(f.kind);
+  fluid_halo_.fill(f.id);
+  fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_);
+  fluid_pairs_.build(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned, cell_size_, true);
+  rebuild_contact_neighbours();
+}
+
+// Sphere halo (wide enough for the fluid kernel and for contacts), the sphere cells
+// at the fluid cut-off, and the contact list at its own cut-off.
+void Simulation::rebuild_contact_neighbours() {
+  DemParticles& s = dem_;
+  const Box& box = scene_.box;
+  for (std::size_t i = 0; i < s.n_owned; ++i) {
+    s.x[i] = box.wrap(0, s.x[i]);
+    s.y[i] = box.wrap(1, s.y[i]);
+    s.x0[i] = s.x[i];
+    s.y0[i] = s.y[i];
+    s.z0[i] = s.z[i];
+  }
+  double rmax = 0;
+  for (std::size_t i = 0; i < s.n_owned; ++i) rmax = std::max(rmax, s.radius[i]);
+  const double skin = scene_.contact.skin * 2.0 * rmax;
+  const double contact_cut = 2.0 * rmax + skin;
+  s.resize(s.n_owned);
+  dem_halo_.build(box, std::max(cell_size_, contact_cut), s.x.data(), s.y.data(), s.z.data(), s.n_owned);
+  s.resize(s.n_owned + dem_halo_.n_ghost());
+  dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
+  for (auto* v : {&s.vx, &s.vy, &s.vz, &s.radius, &s.mass}) dem_halo_.fill(*v);
+  dem_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cell_size_);
+  if (s.n_owned > 0) {
+    contact_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
+    contacts_.build(s, contact_cells_, skin);
+  }
+}
+
+void Simulation::update_pressure_and_h() {
+  FluidParticles& f = fluid_;
+  const double sigma = scene_.fluid.smoothing_factor;
+  const long n = static_cast<long>(f.n_owned);
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    f.h[a] = sigma * std::cbrt(f.mass[a] / f.rho[a]);  // (2.65)
+    f.P[a] = eos_.pressure(f.rho[a], f.eps[a]);         // (2.58)
+    f.cs[a] = eos_.sound_speed(f.rho[a], f.eps[a]);     // (2.59)
+  }
+}
+
+void Simulation::refresh() {
+  rebuild_neighbours();
+  compute_fluid_side(true);
+  dem_forces(false, 0.0);
+}
+
+// Passes that follow the drift: voidage -> density rate -> pressure -> theta ->
+// interpolation at spheres -> reaction on the fluid. Leaves (ax, ay, az) complete.
+void Simulation::compute_fluid_side(bool hold_spheres) {
+  FluidParticles& f = fluid_;
+  DemParticles& s = dem_;
+  Lap lap{timers_};
+  voidage_clamped_ = compute_fluid_voidage(f, s, dem_cells_, scene_.voidage_floor);
+  fluid_halo_.fill(f.eps);
+  lap(kVoidage);
+  update_pressure_and_h();
+  for (auto* v : {&f.h, &f.P, &f.cs}) fluid_halo_.fill(*v);
+  omega_bounded_ = compute_density_rate(f, fluid_pairs_);
+  fluid_halo_.fill(f.omega);
+  lap(kDensity);
+  compute_fluid_acceleration(f, fluid_pairs_,
+                             MomentumParams{scene_.fluid.viscosity, scene_.fluid.alpha_artificial, scene_.time.cfl});
+  for (auto* v : {&f.thx, &f.thy, &f.thz}) fluid_halo_.fill(*v);
+  lap(kMomentum);
+  interpolate_fluid_at_spheres(s, f, fluid_cells_);
+  lap(kInterp);
+  if (hold_spheres) {
+    // Held spheres: the force they feel now is what the fluid gets back.
+    dem_forces(false, 0.0);
+    for (std::size_t j = 0; j < s.n_owned; ++j) {
+      s.fmx[j] = s.fx[j];
+      s.fmy[j] = s.fy[j];
+      s.fmz[j] = s.fz[j];
+    }
+  }
+  for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard}) dem_halo_.fill(*v);
+  const auto& g = scene_.gravity;
+  const long n = static_cast<long>(f.n_owned);
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    const bool mobile = f.kind[a] == kFluid;
+    f.ax[a] = mobile ? f.thx[a] + g[0] : 0.0;
+    f.ay[a] = mobile ? f.thy[a] + g[1] : 0.0;
+    f.az[a] = mobile ? f.thz[a] + g[2] : 0.0;
+  }
+  add_reaction_on_fluid(f, s, dem_cells_);
+  lap(kReaction);
+}
+
+// Fluid force (2.68) and contact force (2.36) on each owned sphere, then the
+// acceleration (2.35); rigid groups share their total force equally (thesis §4.5).
+// With accumulate_mean, adds weight * (fluid force) to the step-mean force fm.
+void Simulation::dem_forces(bool accumulate_mean, double weight) {
+  DemParticles& s = dem_;
+  if (s.n_owned == 0) return;
+  compute_contact_forces(s, contacts_, scene_.contact.normal, 0.0);
+  const long n = static_cast<long>(s.n_owned);
+  const auto& g = scene_.gravity;
+  std::visit(
+      [&](const auto& law) {
+#pragma omp parallel for schedule(static)
+        for (long j = 0; j < n; ++j) {
+          double fx, fy, fz;
+          fluid_force_on_sphere(s, j, law, drag_fluid_, fx, fy, fz);
+          if (accumulate_mean) {  // trapezoidal impulse of this sub-step: 0.5 dt (f_old + f_new)
+            s.fmx[j] += weight * (s.fx[j] + fx);
+            s.fmy[j] += weight * (s.fy[j] + fy);
+            s.fmz[j] += weight * (s.fz[j] + fz);
+          }
+          s.fx[j] = fx;
+          s.fy[j] = fy;
+          s.fz[j] = fz;
+          const double inv_m = 1.0 / s.mass[j];
+          s.ax[j] = (s.cx[j] + fx) * inv_m + g[0];
+          s.ay[j] = (s.cy[j] + fy) * inv_m + g[1];
+          s.az[j] = (s.cz[j] + fz) * inv_m + g[2];
+        }
+      },
+      scene_.drag);
+  if (n_groups_ == 0) return;
+  std::fill(group_fx_.begin(), group_fx_.end(), 0.0);
+  std::fill(group_fy_.begin(), group_fy_.end(), 0.0);
+  std::fill(group_fz_.begin(), group_fz_.end(), 0.0);
+  std::fill(group_m_.begin(), group_m_.end(), 0.0);
+  for (long j = 0; j < n; ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    group_fx_[gr] += s.ax[j] * s.mass[j];
+    group_fy_[gr] += s.ay[j] * s.mass[j];
+    group_fz_[gr] += s.az[j] * s.mass[j];
+    group_m_[gr] += s.mass[j];
+  }
+  for (long j = 0; j < n; ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    s.ax[j] = group_fx_[gr] / group_m_[gr];
+    s.ay[j] = group_fy_[gr] / group_m_[gr];
+    s.az[j] = group_fz_[gr] / group_m_[gr];
+  }
+}
+
+// DEM over one half of an SPH step: velocity-Verlet sub-steps with the fluid fields
+// at the spheres held fixed (physics.md §4). The fluid impulse of the second half of
+// one step and the first half of the next make the mean force fm that the fluid gets
+// back at the next evaluation, so every impulse is returned exactly once.
+void Simulation::dem_half(double dt, bool first_half) {
+  DemParticles& s = dem_;
+  if (s.n_owned == 0) return;
+  const long n = static_cast<long>(s.n_owned);
+  const int per_half = std::max(1, static_cast<int>(std::ceil(0.5 * dt / dt_dem_max_)));
+  const double h = 0.5 * dt / per_half;
+  dt_dem_ = h;
+  dem_substeps_ = 2 * per_half;
+  if (!first_half) {  // start the window of the next mean force
+    std::fill(s.fmx.begin(), s.fmx.end(), 0.0);
+    std::fill(s.fmy.begin(), s.fmy.end(), 0.0);
+    std::fill(s.fmz.begin(), s.fmz.end(), 0.0);
+  }
+  const double half_skin = 0.5 * contacts_.skin;
+  for (int k = 0; k < per_half; ++k) {
+    double max_disp2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : max_disp2)
+    for (long j = 0; j < n; ++j) {
+      s.vx[j] += 0.5 * h * s.ax[j];
+      s.vy[j] += 0.5 * h * s.ay[j];
+      s.vz[j] += 0.5 * h * s.az[j];
+      s.x[j] += h * s.vx[j];
+      s.y[j] += h * s.vy[j];
+      s.z[j] += h * s.vz[j];
+      const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
+      max_disp2 = std::max(max_disp2, dx * dx + dy * dy + dz * dz);
+    }
+    if (max_disp2 > half_skin * half_skin) {
+      rebuild_contact_neighbours();
+    } else {
+      dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
+      for (auto* v : {&s.vx, &s.vy, &s.vz}) dem_halo_.fill(*v);
+    }
+    dem_forces(true, 0.5 * h / dt);
+#pragma omp parallel for schedule(static)
+    for (long j = 0; j < n; ++j) {
+      s.vx[j] += 0.5 * h * s.ax[j];
+      s.vy[j] += 0.5 * h * s.ay[j];
+      s.vz[j] += 0.5 * h * s.az[j];
+    }
+  }
+}
+
+void Simulation::relax() {
+  for (int k = 0; k < scene_.startup.relax_steps; ++k) advance(true);
+  // Release at t = 0: spheres start from rest relative to their initial velocity.
+  time_ = 0.0;
+  steps_ = 0;
+  dem_forces(false, 0.0);
+  DemParticles& s = dem_;
+  std::fill(s.fmx.begin(), s.fmx.end(), 0.0);  // the first mean-force window opens now
+  std::fill(s.fmy.begin(), s.fmy.end(), 0.0);
+  std::fill(s.fmz.begin(), s.fmz.end(), 0.0);
+}
+
+void Simulation::step() { advance(false); }
+
+// One SPH step, symplectic position-Verlet (the scheme of DualSPHysics, which keeps
+// density and pressure in step with the positions; a kick-drift-kick with the
+// pressure half a step behind the positions anti-damps acoustic modes):
+//   1. predictor: x, u, rho to n+1/2 with the rates of the last evaluation
+//   2. DEM sub-steps over the first half (fluid fields at the spheres held)
+//   3. neighbours at n+1/2; voidage -> density rate -> h, P -> theta -> interpolation
+//      at spheres -> reaction of the spheres' mean force on the fluid
+//   4. corrector: u^{n+1} = u^n + dt a^{n+1/2}, x^{n+1} = x^{n+1/2} + dt/2 u^{n+1},
+//      rho^{n+1} = rho^n (2 - e)/(2 + e), e = -dt drho/rho
+//   5. DEM sub-steps over the second half with the new fluid fields; next dt (CFL)
+void Simulation::advance(bool hold_spheres) {
+  FluidParticles& f = fluid_;
+  const double dt = dt_sph_;
+  const long n = static_cast<long>(f.n_owned);
+  Lap lap{timers_};
+  u0x_.resize(n);
+  u0y_.resize(n);
+  u0z_.resize(n);
+  rho0_.resize(n);
+  const double keep = hold_spheres ? 1.0 - scene_.startup.damping : 1.0;
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    rho0_[a] = f.rho[a];
+    f.rho[a] += 0.5 * dt * f.drho[a];
+    u0x_[a] = f.vx[a] * keep;
+    u0y_[a] = f.vy[a] * keep;
+    u0z_[a] = f.vz[a] * keep;
+    if (f.kind[a] != kFluid) continue;
+    f.x[a] += 0.5 * dt * u0x_[a];
+    f.y[a] += 0.5 * dt * u0y_[a];
+    f.z[a] += 0.5 * dt * u0z_[a];
+    f.vx[a] = u0x_[a] + 0.5 * dt * f.ax[a];
+    f.vy[a] = u0y_[a] + 0.5 * dt * f.ay[a];
+    f.vz[a] = u0z_[a] + 0.5 * dt * f.az[a];
+  }
+  lap(kIntegrate);
+  if (!hold_spheres) dem_half(dt, /*first_half=*/true);
+  lap(kDem);
+  rebuild_neighbours();
+  lap(kNeighbours);
+  compute_fluid_side(hold_spheres);
+  lap.start = Clock::now();  // compute_fluid_side timed its own passes
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    const double e = -dt * f.drho[a] / f.rho[a];
+    f.rho[a] = rho0_[a] * (2.0 - e) / (2.0 + e);
+    if (f.kind[a] != kFluid) continue;
+    f.vx[a] = u0x_[a] + dt * f.ax[a];
+    f.vy[a] = u0y_[a] + dt * f.ay[a];
+    f.vz[a] = u0z_[a] + dt * f.az[a];
+    f.x[a] += 0.5 * dt * f.vx[a];
+    f.y[a] += 0.5 * dt * f.vy[a];
+    f.z[a] += 0.5 * dt * f.vz[a];
+  }
+  lap(kIntegrate);
+  if (!hold_spheres) dem_half(dt, /*first_half=*/false);
+  lap(kDem);
+  check_finite();
+  if (!hold_spheres) {
+    time_ += dt;
+    ++steps_;
+  }
+  next_dt();
+  lap(kOther);
+}
+
+void Simulation::next_dt() {
+  const FluidParticles& f = fluid_;
+  double dt = scene_.time.max_dt_sph;
+  const double nu = scene_.fluid.viscosity / scene_.fluid.density;
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    if (f.kind[a] != kFluid) continue;
+    dt = std::min(dt, f.dt_limit[a]);                     // CFL (3.5)
+    dt = std::min(dt, 0.125 * f.h[a] * f.h[a] / nu);      // viscous diffusion
+    const double acc = std::sqrt(f.ax[a] * f.ax[a] + f.ay[a] * f.ay[a] + f.az[a] * f.az[a]);
+    if (acc > 0) dt = std::min(dt, 0.25 * std::sqrt(f.h[a] / acc));  // force
+  }
+  dt_sph_ = dt;
+}
+
+void Simulation::check_finite() const {
+  const FluidParticles& f = fluid_;
+  for (std::size_t a = 0; a < f.n_owned; ++a)
+    if (!std::isfinite(f.x[a] + f.y[a] + f.z[a] + f.vx[a] + f.vy[a] + f.vz[a] + f.rho[a]))
+      throw std::runtime_error(fmt::format("step {} (t = {:.6g} s): fluid particle id {} has a non-finite "
+                                           "state; reduce time.cfl or raise fluid.sound_speed",
+                                           steps_, time_, f.id[a]));
+  const DemParticles& s = dem_;
+  for (std::size_t j = 0; j < s.n_owned; ++j)
+    if (!std::isfinite(s.x[j] + s.y[j] + s.z[j] + s.vx[j] + s.vy[j] + s.vz[j]))
+      throw std::runtime_error(fmt::format("step {} (t = {:.6g} s): sphere id {} has a non-finite state; "
+                                           "raise time.dem_steps_per_contact",
+                                           steps_, time_, s.id[j]));
+}
+
+Diagnostics Simulation::diagnostics() const {
+  Diagnostics d;
+  const FluidParticles& f = fluid_;
+  const DemParticles& s = dem_;
+  d.time = time_;
+  d.step = steps_;
+  d.dt_sph = dt_sph_;
+  d.dt_dem = dt_dem_;
+  d.voidage_clamped = voidage_clamped_;
+  d.omega_bounded = omega_bounded_;
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    if (f.kind[a] != kFluid) continue;
+    d.fluid_mass += f.mass[a];
+    d.kinetic_energy_fluid += 0.5 * f.mass[a] * (f.vx[a] * f.vx[a] + f.vy[a] * f.vy[a] + f.vz[a] * f.vz[a]);
+    d.max_density_error = std::max(d.max_density_error, std::abs(f.rho[a] / (f.eps[a] * eos_.rho0) - 1.0));
+  }
+  const std::size_t ns = scene_.species.size();
+  d.vz_mean.assign(ns, 0.0);
+  d.slip_z_mean.assign(ns, 0.0);
+  d.com_z.assign(ns, 0.0);
+  d.count.assign(ns, 0);
+  std::vector<double> mass(ns, 0.0);
+  for (std::size_t j = 0; j < s.n_owned; ++j) {
+    const int sp = s.species[j];
+    d.kinetic_energy_solid += 0.5 * s.mass[j] * (s.vx[j] * s.vx[j] + s.vy[j] * s.vy[j] + s.vz[j] * s.vz[j]);
+    d.max_overlap_over_d = std::max(d.max_overlap_over_d, s.overlap_max[j] / (2.0 * s.radius[j]));
+    d.vz_mean[sp] += s.vz[j];
+    d.slip_z_mean[sp] += s.eps[j] * (s.ufz[j] - s.vz[j]);
+    d.com_z[sp] += s.mass[j] * s.z[j];
+    mass[sp] += s.mass[j];
+    ++d.count[sp];
+  }
+  for (std::size_t sp = 0; sp < ns; ++sp) {
+    if (d.count[sp] == 0) continue;
+    d.vz_mean[sp] /= d.count[sp];
+    d.slip_z_mean[sp] /= d.count[sp];
+    d.com_z[sp] /= mass[sp];
+  }
+  return d;
+}
+
+}  // namespace sphdem

@@ -1,0 +1,109 @@
+#pragma once
+// One coupled SPH-DEM run: the state (fluid and sphere arrays), the neighbour
+// structures, and the propagator that advances them (see step() for the passes).
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "dem/contact_forces.hpp"
+#include "dem/dem_particles.hpp"
+#include "domain/cell_list.hpp"
+#include "domain/neighbour_list.hpp"
+#include "domain/periodic_halo.hpp"
+#include "run/scene.hpp"
+#include "sph/equation_of_state.hpp"
+#include "sph/fluid_particles.hpp"
+
+namespace sphdem {
+
+// Per-species and global observables (the columns of log.csv).
+struct Diagnostics {
+  double time = 0;
+  long step = 0;
+  double dt_sph = 0, dt_dem = 0;
+  double fluid_mass = 0;
+  double kinetic_energy_fluid = 0, kinetic_energy_solid = 0;
+  double max_overlap_over_d = 0;
+  double max_density_error = 0;  // max |rho/(eps rho0) - 1| over mobile fluid
+  std::size_t voidage_clamped = 0, omega_bounded = 0;
+  std::vector<double> vz_mean, slip_z_mean, com_z;  // per species
+  std::vector<std::size_t> count;                    // spheres per species
+};
+
+// Wall-clock time spent in each pass of the propagator.
+struct PassTimers {
+  static constexpr int kCount = 9;
+  static constexpr const char* kNames[kCount] = {"integrate_fluid", "dem_substeps", "neighbours",
+                                                 "voidage", "density_rate", "momentum",
+                                                 "interpolation", "reaction", "other"};
+  std::array<double, kCount> seconds{};
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const Scene& scene);
+
+  // Start-up: fluid steps with the spheres held, velocities damped (physics.md §4).
+  void relax();
+  // One SPH step with DEM sub-cycling; time advances by dt_sph().
+  void step();
+
+  double time() const { return time_; }
+  long step_count() const { return steps_; }
+  double dt_sph() const { return dt_sph_; }
+  double dt_dem() const { return dt_dem_; }
+  double dt_dem_max() const { return dt_dem_max_; }
+  int dem_substeps() const { return dem_substeps_; }
+  double contact_time() const { return t_contact_; }
+  const Scene& scene() const { return scene_; }
+  const TaitEquationOfState& eos() const { return eos_; }
+  FluidParticles& fluid() { return fluid_; }
+  const FluidParticles& fluid() const { return fluid_; }
+  DemParticles& spheres() { return dem_; }
+  const DemParticles& spheres() const { return dem_; }
+  const PassTimers& timers() const { return timers_; }
+  Diagnostics diagnostics() const;
+  std::size_t fluid_count() const;  // mobile fluid particles
+  std::size_t wall_count() const;
+
+  // Exposed for tests and benchmarks: rebuild neighbours and recompute every
+  // derived field (voidage, density rate, pressure, theta, interpolation) at the
+  // current positions, without advancing time.
+  void refresh();
+
+ private:
+  void build_initial_state();
+  void advance(bool hold_spheres);
+  void rebuild_neighbours();
+  void rebuild_contact_neighbours();
+  void update_pressure_and_h();
+  void compute_fluid_side(bool hold_spheres);
+  void dem_half(double dt, bool first_half);
+  void dem_forces(bool accumulate_mean, double weight);
+  void check_finite() const;
+  double fluid_cutoff() const;
+  void next_dt();
+
+  Scene scene_;
+  TaitEquationOfState eos_;
+  drag::Fluid drag_fluid_;
+  FluidParticles fluid_;
+  DemParticles dem_;
+  PeriodicHalo fluid_halo_, dem_halo_;
+  CellList fluid_cells_, dem_cells_, contact_cells_;
+  NeighbourList fluid_pairs_;  // fluid-fluid pairs within the cell size
+  ContactNeighbourList contacts_;
+  std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
+  std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
+  int n_groups_ = 0;
+  double time_ = 0, dt_sph_ = 0, dt_dem_ = 0, dt_dem_max_ = 0, t_contact_ = 0;
+  double cell_size_ = 0;
+  int dem_substeps_ = 0;
+  long steps_ = 0;
+  std::size_t voidage_clamped_ = 0, omega_bounded_ = 0;
+  PassTimers timers_;
+};
+
+}  // namespace sphdem
