@@ -6,7 +6,7 @@ namespace sphdem {
 
 void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, const CellList& fluid_cells) {
   const long n = static_cast<long>(s.n_owned);
-  const double rc = fluid_cells.cell_size();
+  const double rc = fluid_cells.max_cutoff();
 #pragma omp parallel for schedule(static)
   for (long j = 0; j < n; ++j) {
     double S = 0, eps = 0, ux = 0, uy = 0, uz = 0, gx = 0, gy = 0, gz = 0;

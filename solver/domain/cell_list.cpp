@@ -6,8 +6,10 @@
 namespace sphdem {
 
 void CellList::build(const double* x, const double* y, const double* z, std::size_t n,
-                     double cell_size) {
-  if (!(cell_size > 0)) throw std::invalid_argument("CellList: cell size must be > 0");
+                     double max_cutoff, int reach) {
+  if (!(max_cutoff > 0) || reach < 1) throw std::invalid_argument("CellList: cut-off must be > 0, reach >= 1");
+  const double cell_size = max_cutoff / reach;
+  reach_ = reach;
   n_ = n;
   cell_ = cell_size;
   inv_ = 1.0 / cell_size;

@@ -12,7 +12,8 @@ void NeighbourList::build(const CellList& cells, const double* x, const double* 
   const double rc2 = rc * rc;
   offset.assign(n_query + 1, 0);
   const int nt = omp_get_max_threads();
-  std::vector<std::vector<std::uint32_t>> local(nt);
+  if (static_cast<int>(local_.size()) < nt) local_.resize(nt);
+  auto& local = local_;
   std::vector<std::size_t> lo(nt + 1, 0);
   // One cell walk: each thread fills its own contiguous block of rows, then the
   // blocks are concatenated.

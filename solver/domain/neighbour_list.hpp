@@ -22,6 +22,9 @@ struct NeighbourList {
   // when exclude_self (query i and binned i are the same particle).
   void build(const CellList& cells, const double* x, const double* y, const double* z, std::size_t n_query,
              double rc, bool exclude_self);
+
+ private:
+  std::vector<std::vector<std::uint32_t>> local_;  // per-thread rows, kept to avoid page faults
 };
 
 }  // namespace sphdem

@@ -130,7 +130,7 @@ void Simulation::rebuild_neighbours() {
   for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.rho, &f.eps}) fluid_halo_.fill(*v);
   fluid_halo_.fill(f.kind);
   fluid_halo_.fill(f.id);
-  fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_);
+  fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
   fluid_pairs_.build(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned, cell_size_, true);
   rebuild_contact_neighbours();
 }
@@ -156,7 +156,7 @@ void Simulation::rebuild_contact_neighbours() {
   s.resize(s.n_owned + dem_halo_.n_ghost());
   dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
   for (auto* v : {&s.vx, &s.vy, &s.vz, &s.radius, &s.mass}) dem_halo_.fill(*v);
-  dem_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cell_size_);
+  dem_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cell_size_, 2);
   if (s.n_owned > 0) {
     contact_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
     contacts_.build(s, contact_cells_, skin);
@@ -170,6 +170,7 @@ void Simulation::update_pressure_and_h() {
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {
     f.h[a] = sigma * std::cbrt(f.mass[a] / f.rho[a]);  // (2.65)
+    f.inv_h[a] = 1.0 / f.h[a];
     f.P[a] = eos_.pressure(f.rho[a], f.eps[a]);         // (2.58)
     f.cs[a] = eos_.sound_speed(f.rho[a], f.eps[a]);     // (2.59)
   }
@@ -191,9 +192,10 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   fluid_halo_.fill(f.eps);
   lap(kVoidage);
   update_pressure_and_h();
-  for (auto* v : {&f.h, &f.P, &f.cs}) fluid_halo_.fill(*v);
+  for (auto* v : {&f.h, &f.inv_h, &f.P, &f.cs}) fluid_halo_.fill(*v);
   omega_bounded_ = compute_density_rate(f, fluid_pairs_);
   fluid_halo_.fill(f.omega);
+  fluid_halo_.fill(f.p_term);
   lap(kDensity);
   compute_fluid_acceleration(f, fluid_pairs_,
                              MomentumParams{scene_.fluid.viscosity, scene_.fluid.alpha_artificial, scene_.time.cfl});

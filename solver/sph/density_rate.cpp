@@ -33,6 +33,7 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& nl) {
     }
     f.omega[a] = omega;
     f.drho[a] = sum_div / omega;
+    f.p_term[a] = f.P[a] / (omega * f.rho[a] * f.rho[a]);
   }
   return bounded;
 }
