@@ -32,6 +32,18 @@ class MapReader {
   MapReader(const YAML::Node& node, std::string path, const std::string& file)
       : node_(node), path_(std::move(path)), file_(file) {
     if (node_ && !node_.IsMap()) fail(path_, "must be a map of keys");
+    std::set<std::string> seen;
+    for (const auto& kv : node_) {  // yaml-cpp keeps the first of duplicate keys silently
+      if (!kv.first.IsScalar()) fail(path_, "every key must be a plain name");
+      const std::string k = kv.first.Scalar();
+      if (!seen.insert(k).second) fail(key(k), "given twice");
+    }
+  }
+  // Declares the keys allowed here and reports any other key at once (used for the
+  // top-level sections, so a misspelt section is named before its absence bites).
+  void expect(std::initializer_list<const char*> keys) {
+    for (const char* k : keys) allowed_.insert(k);
+    finish();
   }
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     throw SceneError(fmt::format("{}: key '{}': {}", file_, key.empty() ? "<top>" : key, what));
@@ -51,11 +63,17 @@ class MapReader {
                 bool hi_open = false) {
     double v = def;
     if (has(k)) v = scalar<double>(k, "a number");
-    const bool bad = std::isnan(v) || (lo_open ? v <= lo : v < lo) || (hi_open ? v >= hi : v > hi);
+    if (!std::isfinite(v)) fail(key(k), fmt::format("must be a finite number (got {})", v));
+    const bool bad = (lo_open ? v <= lo : v < lo) || (hi_open ? v >= hi : v > hi);
     if (bad)
       fail(key(k), fmt::format("must be in {}{}, {}{} (got {})", lo_open ? "(" : "[", lo,
                                hi, hi_open ? ")" : "]", v));
     return v;
+  }
+  // A number the file must give (no default).
+  double required(const std::string& k, double lo, double hi, bool lo_open = false) {
+    if (!has(k)) fail(key(k), fmt::format("is required: a number in {}{}, {}]", lo_open ? "(" : "[", lo, hi));
+    return number(k, 0.0, lo, hi, lo_open);
   }
   int integer(const std::string& k, int def, int lo, int hi) {
     int v = def;
@@ -92,7 +110,7 @@ class MapReader {
   void finish() const {
     if (!node_) return;
     for (const auto& kv : node_) {
-      const std::string k = kv.first.as<std::string>();
+      const std::string k = kv.first.Scalar();
       if (!allowed_.count(k))
         fail(key(k), fmt::format("unknown key; allowed here: {}", fmt::join(allowed_, ", ")));
     }
@@ -132,6 +150,9 @@ void apply_override(YAML::Node root, const std::string& assignment, const std::s
   YAML::Node node = root;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const bool last = k + 1 == parts.size();
+    if (node.IsScalar())
+      throw SceneError(fmt::format("{}: --set '{}': '{}' holds a value, not a map of keys", file, assignment,
+                                   fmt::join(parts.begin(), parts.begin() + k, ".")));
     if (node.IsSequence()) {
       std::size_t idx = 0;
       try {
@@ -162,6 +183,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   Scene sc;
   sc.source = file;
   MapReader top(root, "", file);
+  top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles", "contact", "drag",
+              "coupling", "time", "startup", "output"});
   sc.name = top.text("name", "scene");
   sc.description = top.text("description", "");
 
@@ -217,8 +240,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       if (sp.name.empty() || sp.name.find_first_of(":, ") != std::string::npos)
         r.fail(r.key("name"), "must be a non-empty name without ':', ',' or spaces");
       if (sc.species_index(sp.name) >= 0) r.fail(r.key("name"), "duplicate species name '" + sp.name + "'");
-      sp.diameter = r.number("diameter", 0.0, 0.0, kInf, true);
-      sp.density = r.number("density", 0.0, 0.0, kInf, true);
+      sp.diameter = r.required("diameter", 0.0, kInf, true);
+      sp.density = r.required("density", 0.0, kInf, true);
       r.finish();
       sc.species.push_back(sp);
     }
@@ -247,9 +270,11 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       } else {
         g.lo = r.vec3("min", sc.box.lo);
         g.hi = r.vec3("max", sc.box.hi);
-        for (int d = 0; d < 3; ++d)
-          if (g.lo[d] < sc.box.lo[d] || g.hi[d] > sc.box.hi[d] || g.hi[d] <= g.lo[d])
-            r.fail(r.key(d == 0 ? "min" : "max"), "region must satisfy 0 <= min < max <= domain.size");
+        for (int d = 0; d < 3; ++d) {
+          if (g.lo[d] < sc.box.lo[d]) r.fail(r.key("min"), "region must satisfy 0 <= min < max <= domain.size (min < 0)");
+          if (g.hi[d] > sc.box.hi[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max > domain.size)");
+          if (g.hi[d] <= g.lo[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max <= min)");
+        }
         g.voidage = r.number("voidage", g.voidage, 1.0 - M_PI / 6.0, 1.0, false, true);
       }
       r.finish();
@@ -345,7 +370,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 
 std::string scene_to_yaml(const Scene& sc) {
   YAML::Emitter e;
-  e.SetDoublePrecision(12);
+  e.SetDoublePrecision(17);  // bit-exact reload of the resolved values
   auto vec = [&](const std::array<double, 3>& v) {
     e << YAML::Flow << YAML::BeginSeq << v[0] << v[1] << v[2] << YAML::EndSeq;
   };

@@ -1,2 +1,166 @@
+// Drag laws (solver/coupling/drag_laws.hpp; physics.md §3, thesis eq. 2.73-2.79).
+// The expected forces are the physics.md formulas written out again here, in the form
+// f = (C_d/8) pi d^2 rho |u_s| u_s (...) with Re = rho |u_s| d / mu, not the solver's
+// rearranged "finite at u_s = 0" forms.
 #include <gtest/gtest.h>
-TEST(Placeholder, Builds) {}
+
+#include <cmath>
+#include <iterator>
+#include <string>
+#include <variant>
+
+#include "coupling/drag_laws.hpp"
+
+namespace {
+
+using namespace sphdem::drag;
+
+constexpr double kPi = 3.14159265358979323846;
+const Fluid kWater{1000.0, 8.9e-4};
+constexpr double kD = 100e-6;  // thesis particle diameter (m)
+
+// Slip speed that gives Reynolds number re for the thesis particle in water.
+double speed_for(double re) { return re * kWater.mu / (kWater.rho * kD); }
+
+// ---- reference formulas (independent of the header) ------------------------------
+
+double stokes_force(double u) { return 3.0 * kPi * kWater.mu * kD * u; }  // (2.73)
+
+double xi_ref(double re) {  // (2.79)
+  return 3.7 - 0.65 * std::exp(-std::pow(1.5 - std::log10(re), 2) / 2.0);
+}
+// (1/8) C_d eps^-xi pi d^2 rho u^2, the Di Felice form (2.76)
+double di_felice_form(double cd, double eps, double u) {
+  const double re = kWater.rho * u * kD / kWater.mu;
+  return cd / 8.0 * std::pow(eps, -xi_ref(re)) * kPi * kD * kD * kWater.rho * u * u;
+}
+double dallavalle_cd(double re) { return std::pow(0.63 + 4.8 / std::sqrt(re), 2); }  // (2.77)
+double brown_lawler_cd(double re) {
+  return 24.0 / re * (1.0 + 0.150 * std::pow(re, 0.681)) + 0.407 / (1.0 + 8710.0 / re);
+}
+// Coulson & Richardson: R'/(rho u^2) = (1.84 Re^-0.31 + 0.293 Re^0.06)^3.45 is a force per
+// projected area pi d^2/4 (dimensionless bracket, so f carries N), (2.75) with |u_s| u_s.
+double coulson_richardson_force(double u) {
+  const double re = kWater.rho * u * kD / kWater.mu;
+  const double r_over_rho_u2 = std::pow(1.84 * std::pow(re, -0.31) + 0.293 * std::pow(re, 0.06), 3.45);
+  return r_over_rho_u2 * kWater.rho * u * u * kPi * kD * kD / 4.0;
+}
+
+double reference_force(const DragLaw& law, double eps, double u) {
+  const double re = kWater.rho * u * kD / kWater.mu;
+  switch (law.index()) {
+    case 0: return stokes_force(u);
+    case 1: return di_felice_form(dallavalle_cd(re), eps, u);
+    case 2: return coulson_richardson_force(u);
+    default: return di_felice_form(brown_lawler_cd(re), eps, u);
+  }
+}
+
+double coefficient(const DragLaw& law, double eps, double u) {
+  return std::visit([&](const auto& l) { return l.coefficient(eps, u, kD, kWater); }, law);
+}
+
+const DragLaw kLaws[] = {Stokes{}, DiFeliceDallavalle{}, CoulsonRichardson{}, BrownLawler{}};
+
+// ---- tests ------------------------------------------------------------------------
+
+TEST(DragLaw, ForceMatchesHandFormulasOverReAndVoidage) {
+  for (const DragLaw& law : kLaws)
+    for (double re : {1e-3, 1e-2, 0.1, 0.5532, 1.0, 10.0, std::pow(10.0, 1.5), 100.0, 1e3})
+      for (double eps : {0.4, 0.6, 0.807, 0.9, 1.0}) {
+        const double u = speed_for(re);
+        const double f = coefficient(law, eps, u) * u;
+        const double expected = reference_force(law, eps, u);
+        // Same formulas, different arrangement: pow/exp/log10 each ~1 ulp, amplified by
+        // exponents <= 3.7 |ln eps| and 3.45; 1e-12 is ~5000 ulp, far below any modelling error.
+        EXPECT_NEAR(f, expected, 1e-12 * expected)
+            << drag_law_name(law) << " Re = " << re << " eps = " << eps;
+      }
+}
+
+// Re -> 0, eps = 1: C_d -> 23.04/Re (Dallavalle), i.e. 23.04/24 of Stokes.
+TEST(DragLaw, DiFeliceStokesLimit) {
+  const double u = speed_for(1e-10);
+  const double ratio = DiFeliceDallavalle{}.coefficient(1.0, u, kD, kWater) * u / stokes_force(u);
+  // next term: 2 (0.63/4.8) sqrt(Re) = 2.6e-6 of the leading one
+  EXPECT_NEAR(ratio, 23.04 / 24.0, 1e-5);
+}
+
+TEST(DragLaw, BrownLawlerStokesLimit) {
+  const double u = speed_for(1e-8);
+  const double ratio = BrownLawler{}.coefficient(1.0, u, kD, kWater) * u / stokes_force(u);
+  EXPECT_NEAR(ratio, 1.0, 1e-5);  // next term 0.15 Re^0.681 = 5e-7
+  // and at Re = 0.1 it is already 1 + 0.15 * 0.1^0.681 = 3.1 % above Stokes
+  const double u1 = speed_for(0.1);
+  EXPECT_NEAR(BrownLawler{}.coefficient(1.0, u1, kD, kWater) * u1 / stokes_force(u1),
+              1.0 + 0.15 * std::pow(0.1, 0.681) + 0.1 * 0.407 / (24.0 * (1.0 + 87100.0)), 1e-12);
+}
+
+// Di Felice's exponent has its minimum 3.7 - 0.65 = 3.05 at log10 Re = 1.5 (eq. 2.79).
+TEST(DragLaw, DiFeliceExponent) {
+  const double re = std::pow(10.0, 1.5);
+  EXPECT_NEAR(di_felice_xi(re), 3.05, 1e-14);  // exp(0) = 1 exactly; only 3.7 - 0.65 rounds
+  EXPECT_GT(di_felice_xi(re * 1.01), 3.05);
+  EXPECT_GT(di_felice_xi(re / 1.01), 3.05);
+  EXPECT_NEAR(di_felice_xi(1e-6), 3.7, 1e-10);  // exp(-7.5^2/2) = 6e-13
+  // the voidage correction of the force at that Re is exactly eps^-3.05, for both laws using it
+  const double u = speed_for(re);
+  for (double eps : {0.4, 0.7}) {
+    EXPECT_NEAR(DiFeliceDallavalle{}.coefficient(eps, u, kD, kWater) / DiFeliceDallavalle{}.coefficient(1.0, u, kD, kWater),
+                std::pow(eps, -3.05), 1e-12 * std::pow(eps, -3.05));
+    EXPECT_NEAR(BrownLawler{}.coefficient(eps, u, kD, kWater) / BrownLawler{}.coefficient(1.0, u, kD, kWater),
+                std::pow(eps, -3.05), 1e-12 * std::pow(eps, -3.05));
+  }
+}
+
+// u_s = 0 (a particle at rest in still fluid) must not produce inf/NaN.
+TEST(DragLaw, FiniteAtZeroSlip) {
+  for (const DragLaw& law : kLaws)
+    for (double eps : {0.4, 1.0}) {
+      const double c = coefficient(law, eps, 0.0);
+      EXPECT_TRUE(std::isfinite(c)) << drag_law_name(law);
+      EXPECT_GE(c, 0.0) << drag_law_name(law);
+    }
+  // and equals the Re -> 0 limits: 3 pi mu d (Stokes, Brown-Lawler) and 2.88 pi mu d (Di Felice), times eps^-3.7
+  for (double eps : {0.4, 1.0}) {
+    const double s = 3.0 * kPi * kWater.mu * kD, v = std::pow(eps, -3.7);
+    EXPECT_NEAR(Stokes{}.coefficient(eps, 0.0, kD, kWater), s, 1e-14 * s);
+    // Re floored at 1e-12: corrections 0.63 sqrt(Re)/4.8 ~ 1e-7 and 0.15 Re^0.681 ~ 1e-9
+    EXPECT_NEAR(DiFeliceDallavalle{}.coefficient(eps, 0.0, kD, kWater), 23.04 / 24.0 * s * v, 1e-6 * s * v);
+    EXPECT_NEAR(BrownLawler{}.coefficient(eps, 0.0, kD, kWater), s * v, 1e-6 * s * v);
+  }
+}
+
+TEST(DragLaw, NameRoundTrip) {
+  for (const char* name : kDragLawNames) {
+    DragLaw law;
+    ASSERT_TRUE(drag_law_from_name(name, law)) << name;
+    EXPECT_EQ(drag_law_name(law), name);
+  }
+  for (const DragLaw& law : kLaws) {
+    DragLaw back = Stokes{};
+    ASSERT_TRUE(drag_law_from_name(drag_law_name(law), back));
+    EXPECT_EQ(back.index(), law.index());
+  }
+  EXPECT_EQ(std::size(kDragLawNames), std::variant_size_v<DragLaw>);
+}
+
+TEST(DragLaw, UnknownNameRejected) {
+  for (const char* bad : {"", "Stokes", "difelice", "di_felice ", "beetstra"}) {
+    DragLaw law = BrownLawler{};
+    EXPECT_FALSE(drag_law_from_name(bad, law)) << '"' << bad << '"';
+  }
+}
+
+// Thesis §5.2.1, block at eps = 0.9: terminal superficial slip v = 0.004924 m/s balances
+// the buoyant weight with the mixture density rho_av = eps rho_f + (1 - eps) rho_p (eq. 4.4).
+TEST(DragLaw, ThesisDiFeliceTerminalSlip) {
+  const double rho_p = 2500.0, g = 9.81, eps = 0.9, v = 0.004924;
+  const double rho_av = eps * kWater.rho + (1.0 - eps) * rho_p;
+  const double weight = (rho_p - rho_av) * kPi * kD * kD * kD / 6.0 * g;
+  const double f = DiFeliceDallavalle{}.coefficient(eps, v, kD, kWater) * v;
+  // 0.5 %: the thesis solved eq. 4.4 with rounded constants and printed 4 digits
+  EXPECT_NEAR(f / weight, 1.0, 0.005);
+}
+
+}  // namespace
