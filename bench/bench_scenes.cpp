@@ -1,0 +1,51 @@
+// Throughput of whole SPH-DEM steps on the scenes users run, in particle-steps per
+// second (Google Benchmark counters). Run: build/bench/bench_scenes
+//   block:  cases/block_monodisperse.yaml (12000 fluid + 1200 wall SPH, 5819 spheres)
+//   column: the peers' `sph` scene (shared/peers/README.md): the same 4x4x6 mm water
+//           column, 13200 SPH particles (walls counted, as the peers count them),
+//           c0 = 1 m/s, no spheres; compare with LIGGGHTS' 0.421 M p-s/s (1 rank).
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+#include "run/scene.hpp"
+#include "run/simulation.hpp"
+
+using namespace sphdem;
+
+namespace {
+
+void run_steps(benchmark::State& state, const Scene& sc, int warmup) {
+  Simulation sim(sc);
+  sim.relax();
+  for (int k = 0; k < warmup; ++k) sim.step();
+  double sph = 0, dem = 0;
+  for (auto _ : state) {
+    sim.step();
+    sph += static_cast<double>(sim.fluid().n_owned);
+    dem += static_cast<double>(sim.spheres().n_owned) * sim.dem_substeps();
+  }
+  state.counters["sph_particle_steps_per_s"] = benchmark::Counter(sph, benchmark::Counter::kIsRate);
+  if (dem > 0) state.counters["dem_particle_steps_per_s"] = benchmark::Counter(dem, benchmark::Counter::kIsRate);
+  state.counters["dem_substeps"] = sim.dem_substeps();
+}
+
+void BM_BlockStep(benchmark::State& state) {
+  run_steps(state, load_scene(SPHDEM_CASES_DIR "/block_monodisperse.yaml", {"startup.relax_steps=20"}), 20);
+}
+BENCHMARK(BM_BlockStep)->Unit(benchmark::kMillisecond)->Iterations(200)->UseRealTime();
+
+void BM_FluidColumnStep(benchmark::State& state) {
+  const Scene sc = load_scene_text(R"(
+name: peers_sph_column
+domain: {size: [0.004, 0.004, 0.006]}
+fluid: {spacing: 2.0e-4, sound_speed: 1.0, wall_layers: 3}
+startup: {relax_steps: 0}
+)", "peers_sph_column");
+  run_steps(state, sc, 200);
+}
+BENCHMARK(BM_FluidColumnStep)->Unit(benchmark::kMillisecond)->Iterations(1400)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
