@@ -3,6 +3,7 @@
 // u_s = eps (u_f - v) (eq. 2.74), Re_p = rho_f |u_s| d / mu. Each law is a small
 // struct with an inline evaluator; a pass is templated on the law and the runtime
 // choice (DragLaw) is resolved once per pass, never per particle.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>

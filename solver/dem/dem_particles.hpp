@@ -31,8 +31,10 @@ struct DemParticles {
   std::size_t n_owned = 0;
   std::size_t size() const { return x.size(); }
 
+  // Every per-particle array with its name (output, checkpoint, resizing, reordering).
   template <class F>
-  void for_each_double(F&& f) {
+  void for_each_field(F&& f) {
+    f("species", species); f("rigid_group", rigid_group); f("id", id);
     f("x", x); f("y", y); f("z", z); f("vx", vx); f("vy", vy); f("vz", vz);
     f("radius", radius); f("mass", mass); f("shepard", shepard); f("eps", eps);
     f("ufx", ufx); f("ufy", ufy); f("ufz", ufz); f("gx", gx); f("gy", gy); f("gz", gz);
@@ -41,10 +43,7 @@ struct DemParticles {
     f("x0", x0); f("y0", y0); f("z0", z0); f("overlap_max", overlap_max);
   }
   void resize(std::size_t n) {
-    for_each_double([n](const char*, std::vector<double>& v) { v.resize(n, 0.0); });
-    species.resize(n, 0);
-    rigid_group.resize(n, -1);
-    id.resize(n, -1);
+    for_each_field([n](const char*, auto& v) { v.resize(n); });
   }
   double volume(std::size_t i) const {
     return 4.0 / 3.0 * 3.14159265358979323846 * radius[i] * radius[i] * radius[i];

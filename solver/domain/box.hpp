@@ -17,9 +17,10 @@ struct Box {
   double wrap(int d, double v) const {
     if (!periodic[d]) return v;
     const double L = length(d);
-    double w = v - L * std::floor((v - lo[d]) / L);
-    if (w >= hi[d]) w -= L;  // guards round-off at the upper face
-    return w;
+    double r = std::fmod(v - lo[d], L);  // in (-L, L)
+    if (r < 0) r += L;                   // in [0, L], L only by round-off
+    const double w = lo[d] + r;
+    return (w >= hi[d] || w < lo[d]) ? lo[d] : w;  // round-off at either face
   }
 };
 

@@ -26,7 +26,7 @@ std::string format_duration(double s) {
 template <class V>
 std::size_t bytes_of(V& container) {
   std::size_t b = 0;
-  container.for_each_double([&](const char*, auto& v) { b += v.capacity() * sizeof(double); });
+  container.for_each_field([&](const char*, auto& v) { b += v.capacity() * sizeof(v[0]); });
   return b;
 }
 }  // namespace

@@ -101,6 +101,7 @@ class Simulation {
   double time_ = 0, dt_sph_ = 0, dt_dem_ = 0, dt_dem_max_ = 0, t_contact_ = 0;
   double cell_size_ = 0;
   int dem_substeps_ = 0;
+  int steps_since_sort_ = 0;
   long steps_ = 0;
   std::size_t voidage_clamped_ = 0, omega_bounded_ = 0;
   PassTimers timers_;

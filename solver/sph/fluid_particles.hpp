@@ -3,9 +3,6 @@
 // halo copies. Wall particles (kind == kWall) are owned but never move.
 #include <cstddef>
 #include <cstdint>
-#include <functional>
-#include <string>
-#include <utility>
 #include <vector>
 
 namespace sphdem {
@@ -34,21 +31,18 @@ struct FluidParticles {
   std::size_t n_owned = 0;
   std::size_t size() const { return x.size(); }
 
-  // Every per-particle double array with its name (output, halo, reordering).
+  // Every per-particle array with its name (output, checkpoint, resizing, reordering).
   template <class F>
-  void for_each_double(F&& f) {
+  void for_each_field(F&& f) {
+    f("kind", kind); f("id", id);
     f("x", x); f("y", y); f("z", z); f("vx", vx); f("vy", vy); f("vz", vz);
     f("rho", rho); f("mass", mass); f("h", h); f("inv_h", inv_h); f("drho", drho); f("omega", omega);
     f("eps", eps); f("P", P); f("cs", cs); f("p_term", p_term); f("thx", thx); f("thy", thy); f("thz", thz);
     f("ax", ax); f("ay", ay); f("az", az); f("dt_limit", dt_limit);
   }
   void resize(std::size_t n) {
-    for_each_double([n](const char*, std::vector<double>& v) { v.resize(n, 0.0); });
-    kind.resize(n, kFluid);
-    id.resize(n, -1);
+    for_each_field([n](const char*, auto& v) { v.resize(n); });
   }
-  // Reorders the owned particles by perm (new i <- old perm[i]); drops halo copies.
-  void permute_owned(const std::vector<std::uint32_t>& perm);
 };
 
 }  // namespace sphdem
