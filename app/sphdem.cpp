@@ -1,13 +1,35 @@
 // sphdem: command-line front end of the solver library.
 //   sphdem run [CASE.yaml] --out DIR [--set key.path=value ...]
 //   sphdem check CASE.yaml [--set ...]
+//   sphdem figures DIR
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "run/runner.hpp"
 #include "run/scene.hpp"
+#include "run/simulation.hpp"
+
+#ifdef SPHDEM_HAVE_CATALYST
+#include "insitu.hpp"
+#include "vtk_snapshots.hpp"
+#endif
+
+namespace {
+
+// The figures of a run directory (finished or interrupted), by pipelines/figures.py
+// under Debian's python3 (which has numpy, matplotlib and h5py).
+int make_figures(const std::string& dir) {
+  const std::string cmd = fmt::format("/usr/bin/python3 '{}/figures.py' '{}'", SPHDEM_PIPELINES_DIR, dir);
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : 1;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"sphdem: coupled SPH-DEM simulator of fluid-particle flows"};
@@ -15,16 +37,23 @@ int main(int argc, char** argv) {
 
   std::string case_file = SPHDEM_DEFAULT_CASE, out_dir = "out";
   std::vector<std::string> overrides;
+  bool no_insitu = false;
   auto* run = app.add_subcommand("run", "run a scene (default: the monodisperse block)");
   run->add_option("case", case_file, "scene file (YAML)")->check(CLI::ExistingFile);
   run->add_option("--out,-o", out_dir, "output directory")->capture_default_str();
   run->add_option("--set", overrides, "override a scene key, e.g. --set time.end=0.01")->allow_extra_args(false);
+  run->add_flag("--no-insitu", no_insitu, "skip the in-situ analysis and figures");
 
   auto* check = app.add_subcommand("check", "validate a scene and print its derived numbers");
   check->add_option("case", case_file, "scene file (YAML)")->required()->check(CLI::ExistingFile);
   check->add_option("--set", overrides, "override a scene key")->allow_extra_args(false);
 
+  std::string fig_dir;
+  auto* figures = app.add_subcommand("figures", "(re)make the figures of a run directory");
+  figures->add_option("dir", fig_dir, "run directory")->required()->check(CLI::ExistingDirectory);
+
   CLI11_PARSE(app, argc, argv);
+  if (*figures) return make_figures(fig_dir);
   try {
     const sphdem::Scene scene = sphdem::load_scene(case_file, overrides);
     if (*check) {
@@ -34,7 +63,64 @@ int main(int argc, char** argv) {
     sphdem::RunOptions opt;
     opt.out_dir = out_dir;
     opt.progress = &std::cerr;
-    sphdem::run_scene(scene, opt);
+    bool insitu_ran = false;
+#ifdef SPHDEM_HAVE_CATALYST
+    std::unique_ptr<sphdem::InSitu> insitu;
+    std::unique_ptr<sphdem::VtkSnapshots> snapshots;
+    const sphdem::GridSpec grid =
+        sphdem::column_voidage_grid(scene.box.length(0), scene.box.length(1), scene.fill_height(),
+                                    scene.insitu.grid_spacing, scene.fluid.smoothing_factor * scene.fluid.spacing);
+    std::vector<double> voidage;
+    if (scene.insitu.enabled && !no_insitu && !scene.insitu.pipelines.empty()) {
+      sphdem::InSituOptions io;
+      io.out_dir = out_dir;
+      io.pipelines_dir = SPHDEM_PIPELINES_DIR;
+      io.pipelines = scene.insitu.pipelines;
+      io.snapshot_every = scene.insitu.snapshot_every;
+      std::filesystem::create_directories(out_dir);
+      insitu = std::make_unique<sphdem::InSitu>(scene, io);
+      opt.hooks.push_back({"in-situ analysis", scene.insitu.every, [&](const sphdem::Simulation& sim) {
+                             voidage = sim.voidage_on_grid(grid, scene.fluid.smoothing_factor * scene.fluid.spacing);
+                             const std::vector<int> contacts = sim.contact_counts();
+                             sphdem::InSituFrame fr;
+                             fr.fluid = &sim.fluid();
+                             fr.spheres = &sim.spheres();
+                             fr.contact_count = &contacts;
+                             fr.grid = grid;
+                             fr.whole_extent = grid.extent;
+                             fr.voidage = &voidage;
+                             fr.time = sim.time();
+                             fr.step = sim.step_count();
+                             insitu->execute(fr);
+                           }});
+      insitu_ran = true;
+    }
+    if (scene.output.vtk_every > 0) {
+      snapshots = std::make_unique<sphdem::VtkSnapshots>((std::filesystem::path(out_dir) / "vtk").string(), 0, 1);
+      opt.hooks.push_back({"VTK snapshots", scene.output.vtk_every, [&](const sphdem::Simulation& sim) {
+                             snapshots->write(sim.fluid(), sim.spheres(), sim.time(), sim.step_count());
+                           }});
+    }
+#else
+    if (scene.output.vtk_every > 0 || (scene.insitu.enabled && !no_insitu))
+      std::cerr << "sphdem: note: built without ParaView (SPHDEM_WITH_PARAVIEW=OFF): no in-situ analysis or VTK output\n";
+#endif
+    std::string failure;
+    try {
+      sphdem::run_scene(scene, opt);
+    } catch (const sphdem::SceneError&) {
+      throw;
+    } catch (const std::exception& e) {
+      failure = e.what();  // keep what was written so far, and still make the figures
+    }
+#ifdef SPHDEM_HAVE_CATALYST
+    insitu.reset();  // finalize Catalyst: pipelines flush their reduced data
+#endif
+    if (insitu_ran) make_figures(out_dir);
+    if (!failure.empty()) {
+      std::cerr << "sphdem: run failed: " << failure << "\n";
+      return 1;
+    }
   } catch (const sphdem::SceneError& e) {
     std::cerr << "sphdem: error: " << e.what() << "\n";
     return 2;

@@ -5,7 +5,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-PACKAGES=(g++ cmake make pkg-config libyaml-cpp-dev libfmt-dev libcli11-dev libgtest-dev libbenchmark-dev)
+# ParaView 5.11 brings its own VTK 9.2 (libvtk9-dev conflicts with it); Catalyst needs
+# parallel HDF5 and Open MPI; Xvfb gives headless runs a display; Debian's python3
+# runs the pipelines' helpers and the figures (h5py, matplotlib, mpi4py, yaml).
+PACKAGES=(g++ cmake make pkg-config libyaml-cpp-dev libfmt-dev libcli11-dev libgtest-dev libbenchmark-dev
+          paraview-dev python3-paraview libhdf5-openmpi-dev libopenmpi-dev openmpi-bin xvfb xauth
+          python3-h5py python3-matplotlib python3-mpi4py python3-yaml python3-numpy)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -20,5 +25,5 @@ if ((${#missing[@]})); then
   $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3
 cmake --build build -j"$(nproc)"

@@ -31,7 +31,7 @@ std::size_t bytes_of(V& container) {
 }
 }  // namespace
 
-RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
+RunSummary run_scene(const Scene& scene, RunOptions opt) {
   namespace fs = std::filesystem;
   fs::create_directories(opt.out_dir);
   {
@@ -48,7 +48,21 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   sim.relax();
   RunLog log((fs::path(opt.out_dir) / "log.csv").string(), scene.species);
   log.write(sim.diagnostics());
-  if (opt.on_log) opt.on_log(sim);
+  std::vector<double> next_hook(opt.hooks.size(), 0.0), last_run(opt.hooks.size(), -1.0);
+  auto run_hooks = [&](bool last) {  // each hook at t = 0, every interval, and at the end
+    for (std::size_t k = 0; k < opt.hooks.size(); ++k) {
+      PeriodicHook& hk = opt.hooks[k];
+      const bool due = sim.time() >= next_hook[k] * (1.0 - 1e-9);
+      if (!due && !(last && last_run[k] != sim.time())) continue;
+      last_run[k] = sim.time();
+      const auto t0 = Clock::now();
+      hk.action(sim);
+      hk.seconds += since(t0);
+      while (next_hook[k] <= sim.time() * (1.0 + 1e-9)) next_hook[k] += hk.interval;
+    }
+  };
+  run_hooks(false);
+  double step_seconds = 0;
 
   const auto t_loop = Clock::now();
   auto t_progress = t_loop;
@@ -56,13 +70,16 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   double dem_sphere_steps = 0;
   const double end = scene.time.end;
   while (sim.time() < end * (1.0 - 1e-12)) {
+    const auto t_step = Clock::now();
     sim.step();
+    step_seconds += since(t_step);
     dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
-    if (sim.time() >= next_log * (1.0 - 1e-9) || sim.time() >= end * (1.0 - 1e-12)) {
+    const bool last = sim.time() >= end * (1.0 - 1e-12);
+    if (sim.time() >= next_log * (1.0 - 1e-9) || last) {
       log.write(sim.diagnostics());
-      if (opt.on_log) opt.on_log(sim);
       while (next_log <= sim.time() * (1.0 + 1e-9)) next_log += scene.output.log_interval;
     }
+    run_hooks(last);
     if (out && since(t_progress) >= scene.output.progress_interval) {
       t_progress = Clock::now();
       const double wall = since(t_loop);
@@ -76,6 +93,8 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   }
   RunSummary r;
   r.steps = sim.step_count();
+  r.step_seconds = step_seconds;
+  r.hooks = opt.hooks;
   r.simulated_time = sim.time();
   r.wall_seconds = since(t_start);
   const double loop = since(t_loop);
@@ -89,6 +108,9 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     for (int k = 0; k < PassTimers::kCount; ++k)
       parts += fmt::format(" {} {:.0f}%", PassTimers::kNames[k], 100.0 * t[k] / std::max(total, 1e-30));
     *out << "sphdem: time per pass:" << parts << "\n";
+    for (const auto& hk : opt.hooks)
+      *out << fmt::format("sphdem: {}: {:.2f} s, {:.1f} % of the step time\n", hk.name, hk.seconds,
+                          100.0 * hk.seconds / std::max(step_seconds, 1e-30));
   }
   if (out)
     *out << fmt::format("sphdem: done, {} steps to t = {:.4e} s in {} ({:.3g} SPH particle-steps/s)\n", r.steps,

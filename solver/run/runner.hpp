@@ -4,6 +4,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "run/scene.hpp"
 
@@ -11,22 +12,31 @@ namespace sphdem {
 
 class Simulation;
 
+// Something to do every `interval` of simulated time (from t = 0, release).
+struct PeriodicHook {
+  std::string name;
+  double interval = 0;
+  std::function<void(const Simulation&)> action;
+  double seconds = 0;  // wall time spent in it (filled by run_scene)
+};
+
 struct RunOptions {
   std::string out_dir = "out";
   std::ostream* progress = nullptr;  // terminal progress lines (nullptr: silent)
-  // Called after every log row (in-situ analysis hooks in here later).
-  std::function<void(const Simulation&)> on_log;
+  std::vector<PeriodicHook> hooks;   // in-situ analysis, snapshots
 };
 
 struct RunSummary {
   long steps = 0;
+  double step_seconds = 0;  // wall time in Simulation::step
+  std::vector<PeriodicHook> hooks;  // with their wall times
   double simulated_time = 0;
   double wall_seconds = 0;
   double fluid_particle_steps_per_second = 0;
   double sphere_particle_steps_per_second = 0;  // sphere sub-steps counted
 };
 
-RunSummary run_scene(const Scene& scene, const RunOptions& options);
+RunSummary run_scene(const Scene& scene, RunOptions options);
 
 // Human-readable derived numbers of a scene (particle counts, h/d, t_c, time steps,
 // sub-steps, memory estimate). Builds the initial state to measure them.

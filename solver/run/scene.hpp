@@ -63,6 +63,17 @@ struct StartupSpec {
 struct OutputSpec {
   double log_interval = 0.0;       // (s); 0 = end / 200
   double progress_interval = 2.0;  // wall-clock seconds between terminal progress lines
+  double vtk_every = 0.0;          // (s) between full .vtp snapshots + .pvd; 0 = none
+};
+
+// In-situ analysis through Catalyst (catalyst/, pipelines/).
+struct InSituSpec {
+  double every = 0.0;  // (s) between analyses; 0 = end / 50
+  std::vector<std::string> pipelines{"voidage_height", "interfaces", "com_tracks", "snapshots"};
+  int snapshot_every = 5;            // analyses between PNG snapshots
+  double grid_spacing = 0.0;         // voidage grid spacing (m); 0 = fluid.spacing / 2
+  double reference_velocity = -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the lattice
+  bool enabled = true;
 };
 
 struct Scene {
@@ -80,6 +91,7 @@ struct Scene {
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;
+  InSituSpec insitu;
 
   double fill_height() const { return fluid.fill_height > 0 ? fluid.fill_height : box.length(2); }
   int species_index(const std::string& name) const;

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "coupling/hindered_settling.hpp"
 #include "run/scene.hpp"
 
 namespace sphdem {
@@ -24,6 +25,7 @@ int Scene::species_index(const std::string& n) const {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+const char* const kPipelineNames[] = {"voidage_height", "interfaces", "com_tracks", "snapshots"};
 
 // Reads one YAML map, remembering which keys were asked for so that any other key
 // is reported as unknown, with the list of allowed ones.
@@ -31,6 +33,7 @@ class MapReader {
  public:
   MapReader(const YAML::Node& node, std::string path, const std::string& file)
       : node_(node), path_(std::move(path)), file_(file) {
+    if (node_ && node_.IsNull()) node_ = YAML::Node(YAML::NodeType::Undefined);  // "section:" alone
     if (node_ && !node_.IsMap()) fail(path_, "must be a map of keys");
     std::set<std::string> seen;
     for (const auto& kv : node_) {  // yaml-cpp keeps the first of duplicate keys silently
@@ -51,11 +54,13 @@ class MapReader {
   std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
   bool has(const std::string& k) {
     allowed_.insert(k);
-    return node_ && node_[k];
+    const YAML::Node& n = node_;
+    return n && n[k];
   }
   YAML::Node child(const std::string& k) {
     allowed_.insert(k);
-    return node_ ? node_[k] : YAML::Node();
+    const YAML::Node& n = node_;  // const lookup: never inserts the key
+    return n ? n[k] : YAML::Node(YAML::NodeType::Undefined);
   }
 
   // A number in [lo, hi] (open ends when lo_open/hi_open).
@@ -184,7 +189,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   sc.source = file;
   MapReader top(root, "", file);
   top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles", "contact", "drag",
-              "coupling", "time", "startup", "output"});
+              "coupling", "time", "startup", "output", "insitu"});
   sc.name = top.text("name", "scene");
   sc.description = top.text("description", "");
 
@@ -324,6 +329,33 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     MapReader r(top.child("output"), "output", file);
     sc.output.log_interval = r.number("log_interval", 0.0, 0.0, kInf);
     sc.output.progress_interval = r.number("progress_interval", sc.output.progress_interval, 0.0, kInf);
+    {
+      MapReader v(r.child("vtk"), "output.vtk", file);
+      sc.output.vtk_every = v.number("every", 0.0, 0.0, kInf);
+      v.finish();
+    }
+    r.finish();
+  }
+  {
+    MapReader r(top.child("insitu"), "insitu", file);
+    InSituSpec& in = sc.insitu;
+    in.enabled = r.boolean("enabled", in.enabled);
+    in.every = r.number("every", 0.0, 0.0, kInf);
+    if (r.has("pipelines")) {
+      const YAML::Node list = r.child("pipelines");
+      if (!list.IsSequence()) r.fail("insitu.pipelines", "must be a list of pipeline names");
+      in.pipelines.clear();
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        const std::string name = list[k].IsScalar() ? list[k].Scalar() : "";
+        if (std::find(std::begin(kPipelineNames), std::end(kPipelineNames), name) == std::end(kPipelineNames))
+          r.fail(fmt::format("insitu.pipelines.{}", k),
+                 fmt::format("must be one of: {} (got '{}')", fmt::join(kPipelineNames, ", "), name));
+        in.pipelines.push_back(name);
+      }
+    }
+    in.snapshot_every = r.integer("snapshot_every", in.snapshot_every, 1, 1000000);
+    in.grid_spacing = r.number("grid_spacing", 0.0, 0.0, kInf);
+    in.reference_velocity = r.number("reference_velocity", in.reference_velocity, -1.0, kInf);
     r.finish();
   }
   top.finish();
@@ -342,6 +374,18 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     sc.fluid.sound_speed = 10.0 * std::max(um, 1e-6);
   }
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
+  if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
+  if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = 0.5 * sc.fluid.spacing;
+  if (sc.insitu.reference_velocity == 0.0) {  // auto: hindered settling of the first lattice group
+    sc.insitu.reference_velocity = -1.0;
+    for (const auto& grp : sc.particles) {
+      if (grp.kind != ParticleGroupSpec::Kind::kLattice) continue;
+      const SpeciesSpec& sp = sc.species[sc.species_index(grp.species)];
+      sc.insitu.reference_velocity = di_felice_hindered_settling(sp.diameter, sp.density, sc.fluid.density,
+                                                                 sc.fluid.viscosity, g, grp.voidage);
+      break;
+    }
+  }
   return sc;
 }
 
@@ -434,7 +478,14 @@ std::string scene_to_yaml(const Scene& sc) {
     << sc.startup.relax_steps << YAML::Key << "damping" << YAML::Value << sc.startup.damping << YAML::EndMap;
   e << YAML::Key << "output" << YAML::Value << YAML::BeginMap << YAML::Key << "log_interval" << YAML::Value
     << sc.output.log_interval << YAML::Key << "progress_interval" << YAML::Value << sc.output.progress_interval
-    << YAML::EndMap;
+    << YAML::Key << "vtk" << YAML::Value << YAML::BeginMap << YAML::Key << "every" << YAML::Value
+    << sc.output.vtk_every << YAML::EndMap << YAML::EndMap;
+  const InSituSpec& in = sc.insitu;
+  e << YAML::Key << "insitu" << YAML::Value << YAML::BeginMap << YAML::Key << "enabled" << YAML::Value << in.enabled
+    << YAML::Key << "every" << YAML::Value << in.every << YAML::Key << "pipelines" << YAML::Value << YAML::Flow
+    << in.pipelines << YAML::Key << "snapshot_every" << YAML::Value << in.snapshot_every << YAML::Key
+    << "grid_spacing" << YAML::Value << in.grid_spacing << YAML::Key << "reference_velocity" << YAML::Value
+    << in.reference_velocity << YAML::EndMap;
   e << YAML::EndMap;
   return std::string(e.c_str()) + "\n";
 }

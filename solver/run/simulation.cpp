@@ -444,6 +444,28 @@ void Simulation::check_finite() const {
                                            steps_, time_, s.id[j]));
 }
 
+std::vector<double> Simulation::voidage_on_grid(const GridSpec& grid, double h) const {
+  if (kernel::kSupport * h <= dem_cells_.max_cutoff()) return compute_voidage_grid(dem_, dem_cells_, grid, h);
+  CellList cells;  // the analysis kernel reaches further than the solver's sphere cells
+  cells.build(dem_.x.data(), dem_.y.data(), dem_.z.data(), dem_.size(), kernel::kSupport * h, 2);
+  return compute_voidage_grid(dem_, cells, grid, h);
+}
+
+std::vector<int> Simulation::contact_counts() const {
+  const DemParticles& s = dem_;
+  std::vector<int> count(s.n_owned, 0);
+  for (std::size_t i = 0; i < s.n_owned; ++i) {
+    for (std::uint32_t k = contacts_.offset[i]; k < contacts_.offset[i + 1]; ++k) {
+      const std::uint32_t j = contacts_.neighbour[k];
+      const double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j], dz = s.z[i] - s.z[j];
+      const double rs = s.radius[i] + s.radius[j];
+      count[i] += dx * dx + dy * dy + dz * dz < rs * rs;
+    }
+    count[i] += s.z[i] < s.radius[i];  // the bottom wall at z = 0
+  }
+  return count;
+}
+
 Diagnostics Simulation::diagnostics() const {
   Diagnostics d;
   const FluidParticles& f = fluid_;

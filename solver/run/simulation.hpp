@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/voidage_grid.hpp"
 #include "dem/contact_forces.hpp"
 #include "dem/dem_particles.hpp"
 #include "domain/cell_list.hpp"
@@ -67,6 +68,11 @@ class Simulation {
   Diagnostics diagnostics() const;
   std::size_t fluid_count() const;  // mobile fluid particles
   std::size_t wall_count() const;
+
+  // The voidage on a regular grid (analysis), with the solver's kernel at length h.
+  std::vector<double> voidage_on_grid(const GridSpec& grid, double h) const;
+  // Number of touching neighbours (spheres and the wall) of each owned sphere.
+  std::vector<int> contact_counts() const;
 
   // Exposed for tests and benchmarks: rebuild neighbours and recompute every
   // derived field (voidage, density rate, pressure, theta, interpolation) at the

@@ -1,0 +1,169 @@
+#include "insitu.hpp"
+
+#include <mpi.h>
+#include <vtkCPDataDescription.h>
+#include <vtkCPInputDataDescription.h>
+#include <vtkCPProcessor.h>
+#include <vtkCPPythonScriptV2Pipeline.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkMPIController.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "headless_display.hpp"
+#include "vtk_views.hpp"
+
+namespace sphdem {
+
+struct InSitu::Impl {
+  Scene scene;
+  InSituOptions opt;
+  std::string scene_yaml;
+  bool own_mpi = false;
+  bool render = false;
+  std::unique_ptr<HeadlessDisplay> display;
+  vtkSmartPointer<vtkMPIController> controller;
+  vtkSmartPointer<vtkCPProcessor> processor;
+  SphereCopies sphere_copies;  // derived sphere fields (diameter, density, species)
+
+  void add_field_data(vtkDataObject* d, const InSituFrame& f) const {
+    vtkFieldData* fd = d->GetFieldData();
+    auto num = [&](const char* name, std::initializer_list<double> v) {
+      vtkNew<vtkDoubleArray> a;
+      a->SetName(name);
+      for (double x : v) a->InsertNextValue(x);
+      fd->AddArray(a);
+    };
+    num("time", {f.time});
+    num("step", {static_cast<double>(f.step)});
+    num("column_height", {scene.fill_height()});
+    num("box", {scene.box.lo[0], scene.box.hi[0], scene.box.lo[1], scene.box.hi[1], scene.box.lo[2],
+                scene.box.hi[2]});
+    num("reference_velocity", {scene.insitu.reference_velocity});
+    double solid = 0;  // rank-local; pipelines reduce
+    for (std::size_t j = 0; j < f.spheres->n_owned; ++j) solid += f.spheres->volume(j);
+    num("solid_volume", {solid});
+    vtkNew<vtkStringArray> names;
+    names->SetName("species_names");
+    for (const auto& s : scene.species) names->InsertNextValue(s.name);
+    fd->AddArray(names);
+    vtkNew<vtkStringArray> yaml;
+    yaml->SetName("scene");
+    yaml->InsertNextValue(scene_yaml);
+    fd->AddArray(yaml);
+  }
+};
+
+InSitu::InSitu(const Scene& scene, const InSituOptions& opt) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.scene = scene;
+  m.opt = opt;
+  m.scene_yaml = scene_to_yaml(scene);
+  int inited = 0;
+  MPI_Initialized(&inited);
+  if (!inited) {
+    MPI_Init(nullptr, nullptr);
+    m.own_mpi = true;
+  }
+  m.controller = vtkSmartPointer<vtkMPIController>::New();
+  m.controller->Initialize(nullptr, nullptr, /*initializedExternally=*/1);
+  vtkMultiProcessController::SetGlobalController(m.controller);
+  const int rank = m.controller->GetLocalProcessId();
+
+  bool wants_render = false;
+  for (const auto& p : opt.pipelines) wants_render |= p == "snapshots";
+  if (wants_render && opt.want_images) {
+    m.display = std::make_unique<HeadlessDisplay>();
+    m.render = m.display->available();
+    if (!m.render && rank == 0)
+      std::cerr << "sphdem: warning: no display for rendering (" << m.display->reason()
+                << "); the snapshots pipeline is skipped, reduced data are still computed\n";
+  }
+
+  const std::string insitu_dir = (std::filesystem::path(opt.out_dir) / "insitu").string();
+  if (rank == 0) std::filesystem::create_directories(insitu_dir);
+  m.controller->Barrier();
+  setenv("SPHDEM_INSITU_DIR", insitu_dir.c_str(), 1);
+  setenv("SPHDEM_RENDER", m.render ? "1" : "0", 1);
+  setenv("SPHDEM_SNAPSHOT_EVERY", std::to_string(opt.snapshot_every).c_str(), 1);
+  setenv("SPHDEM_PIPELINES_DIR", opt.pipelines_dir.c_str(), 1);
+
+  m.processor = vtkSmartPointer<vtkCPProcessor>::New();
+  m.processor->Initialize();
+  for (const auto& name : opt.pipelines) {
+    if (name == "snapshots" && !m.render) continue;
+    const std::string path = (std::filesystem::path(opt.pipelines_dir) / (name + ".py")).string();
+    auto pipe = vtkSmartPointer<vtkCPPythonScriptV2Pipeline>::New();
+    if (!pipe->Initialize(path.c_str()))
+      throw std::runtime_error("in-situ pipeline '" + name + "' could not be loaded from " + path);
+    m.processor->AddPipeline(pipe);
+  }
+}
+
+InSitu::~InSitu() {
+  Impl& m = *impl_;
+  if (m.processor) m.processor->Finalize();
+  m.processor = nullptr;
+  vtkMultiProcessController::SetGlobalController(nullptr);
+  if (m.controller) m.controller->Finalize(/*finalizedExternally=*/1);
+  m.controller = nullptr;
+  if (m.own_mpi) {
+    int fin = 0;
+    MPI_Finalized(&fin);
+    if (!fin) MPI_Finalize();
+  }
+}
+
+bool InSitu::rendering() const { return impl_->render; }
+
+void InSitu::execute(const InSituFrame& f) {
+  Impl& m = *impl_;
+  vtkNew<vtkCPDataDescription> dd;
+  dd->AddInput("fluid");
+  dd->AddInput("particles");
+  dd->AddInput("voidage");
+  dd->SetTimeData(f.time, f.step);
+  if (!m.processor->RequestDataDescription(dd)) return;
+
+  auto fluid = fluid_view(*f.fluid);
+  m.add_field_data(fluid, f);
+  auto parts = sphere_view(*f.spheres, f.contact_count, m.sphere_copies);
+  m.add_field_data(parts, f);
+
+  // voidage: this rank's piece of the regular grid
+  vtkNew<vtkImageData> grid;
+  std::array<int, 6> extent = f.grid.extent;
+  grid->SetExtent(extent.data());
+  grid->SetOrigin(f.grid.origin.data());
+  grid->SetSpacing(f.grid.spacing.data());
+  vtkNew<vtkDoubleArray> eps;
+  eps->SetName("voidage");
+  eps->SetArray(const_cast<double*>(f.voidage->data()), static_cast<vtkIdType>(f.voidage->size()), 1);
+  grid->GetPointData()->AddArray(eps);
+  grid->GetPointData()->SetActiveScalars("voidage");
+  m.add_field_data(grid, f);
+  {
+    vtkNew<vtkDoubleArray> whole;  // global node index range, for assembling pieces
+    whole->SetName("whole_extent");
+    for (int v : f.whole_extent) whole->InsertNextValue(v);
+    grid->GetFieldData()->AddArray(whole);
+  }
+
+  dd->GetInputDescriptionByName("fluid")->SetGrid(fluid);
+  dd->GetInputDescriptionByName("particles")->SetGrid(parts);
+  vtkCPInputDataDescription* vd = dd->GetInputDescriptionByName("voidage");
+  vd->SetGrid(grid);
+  vd->SetWholeExtent(const_cast<int*>(f.whole_extent.data()));
+  m.processor->CoProcess(dd);
+}
+
+}  // namespace sphdem

@@ -1,0 +1,87 @@
+"""Shared helpers of the sphdem Catalyst pipelines (imported by the V2 scripts).
+
+Every reduction here is parallel-aware: each rank holds only the particles it owns
+and its piece of the voidage grid, so sums are all-reduced over MPI ranks (inside
+Catalyst, GetDataInformation()/GetRange() are rank-local). Rank 0 writes the files.
+"""
+import os
+
+import numpy as np
+from paraview.vtk.numpy_interface import dataset_adapter as dsa
+
+try:
+    from mpi4py import MPI
+
+    COMM = MPI.COMM_WORLD
+except Exception:  # no mpi4py: a single rank
+    COMM = None
+
+RANK = COMM.Get_rank() if COMM is not None else 0
+OUT = os.environ.get("SPHDEM_INSITU_DIR", ".")
+RENDER = os.environ.get("SPHDEM_RENDER", "1") == "1"
+SNAPSHOT_EVERY = int(os.environ.get("SPHDEM_SNAPSHOT_EVERY", "5"))
+
+
+def allreduce_sum(a):
+    """Element-wise sum of a numpy array over ranks."""
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    if COMM is None or COMM.Get_size() == 1:
+        return a
+    out = np.empty_like(a)
+    COMM.Allreduce(a, out, op=MPI.SUM)
+    return out
+
+
+def local_data(producer, time):
+    """The rank-local dataset of a Catalyst channel, wrapped for numpy."""
+    producer.UpdatePipeline(time)
+    return dsa.WrapDataObject(producer.GetClientSideObject().GetOutputDataObject(0))
+
+
+def field(data, name):
+    return np.asarray(data.FieldData[name])
+
+
+def species_names(data):
+    arr = data.VTKObject.GetFieldData().GetAbstractArray("species_names")
+    return [arr.GetValue(i) for i in range(arr.GetNumberOfValues())]
+
+
+_profile_cache = {}
+
+
+def voidage_profile(producer, time):
+    """Laterally averaged voidage eps(z) over the whole grid: (z, eps), cached per time
+    so that every pipeline of one analysis shares one reduction."""
+    if time in _profile_cache:
+        return _profile_cache[time]
+    img = local_data(producer, time)
+    obj = img.VTKObject
+    ext = obj.GetExtent()
+    whole = field(img, "whole_extent").astype(int)
+    origin, spacing = obj.GetOrigin(), obj.GetSpacing()
+    nz_whole = whole[5] - whole[4] + 1
+    sums = np.zeros(nz_whole)
+    counts = np.zeros(nz_whole)
+    eps = np.asarray(img.PointData["voidage"])
+    if eps.size:
+        ni, nj, nk = ext[1] - ext[0] + 1, ext[3] - ext[2] + 1, ext[5] - ext[4] + 1
+        block = eps.reshape(nk, nj, ni)
+        k0 = ext[4] - whole[4]
+        sums[k0:k0 + nk] += block.sum(axis=(1, 2))
+        counts[k0:k0 + nk] += ni * nj
+    sums = allreduce_sum(sums)
+    counts = allreduce_sum(counts)
+    z = origin[2] + spacing[2] * np.arange(whole[4], whole[5] + 1)
+    prof = (z, sums / np.maximum(counts, 1))
+    _profile_cache.clear()
+    _profile_cache[time] = prof
+    return prof
+
+
+def write_atomic(path, writer):
+    """Write through a temporary file and rename, so readers (and an interrupted run)
+    never see half a file."""
+    tmp = path + ".tmp"
+    writer(tmp)
+    os.replace(tmp, path)
