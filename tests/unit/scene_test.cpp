@@ -632,6 +632,8 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
       {"time.", "time: {zz_unknown: 1}\n"},
       {"startup.", "startup: {zz_unknown: 1}\n"},
       {"output.", "output: {zz_unknown: 1}\n"},
+      {"output.vtk.", "output: {vtk: {zz_unknown: 1}}\n"},
+      {"insitu.", "insitu: {zz_unknown: 1}\n"},
   };
   std::size_t n = 0;
   for (const auto& s : sections) {
