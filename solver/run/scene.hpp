@@ -71,7 +71,7 @@ struct InSituSpec {
   double every = 0.0;  // (s) between analyses; 0 = end / 50
   std::vector<std::string> pipelines{"voidage_height", "interfaces", "com_tracks", "snapshots"};
   int snapshot_every = 5;            // analyses between PNG snapshots
-  double grid_spacing = 0.0;         // voidage grid spacing (m); 0 = fluid.spacing / 2
+  double grid_spacing = 0.0;         // voidage grid spacing (m); 0 = fluid.spacing
   double reference_velocity = -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the lattice
   bool enabled = true;
 };

@@ -375,7 +375,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   }
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
-  if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = 0.5 * sc.fluid.spacing;
+  if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = sc.fluid.spacing;
   if (sc.insitu.reference_velocity == 0.0) {  // auto: hindered settling of the first lattice group
     sc.insitu.reference_velocity = -1.0;
     for (const auto& grp : sc.particles) {
