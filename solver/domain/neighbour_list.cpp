@@ -8,7 +8,7 @@
 namespace sphdem {
 
 void NeighbourList::build(const CellList& cells, const double* x, const double* y, const double* z,
-                          std::size_t n_query, double rc, bool exclude_self) {
+                          std::size_t n_query, double rc, bool exclude_self, bool half) {
   const double rc2 = rc * rc;
   offset.assign(n_query + 1, 0);
   const int nt = omp_get_max_threads();
@@ -25,7 +25,7 @@ void NeighbourList::build(const CellList& cells, const double* x, const double* 
     buf.clear();
     for (std::size_t i = b; i < e; ++i) {
       cells.for_each_neighbour(x[i], y[i], z[i], rc2, [&](std::uint32_t j, double, double, double, double) {
-        if (!(exclude_self && j == i)) buf.push_back(j);
+        if (half ? (j > i || j >= n_query) : !(exclude_self && j == i)) buf.push_back(j);
       });
       offset[i + 1] = static_cast<std::uint32_t>(buf.size());  // local for now
     }

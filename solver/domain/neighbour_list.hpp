@@ -19,9 +19,11 @@ struct NeighbourList {
   std::uint32_t end(std::size_t i) const { return offset[i + 1]; }
 
   // Points j of `cells` with |x_i - x_j| < rc for i in [0, n_query); self excluded
-  // when exclude_self (query i and binned i are the same particle).
+  // when exclude_self (query i and binned i are the same particle). With half, a pair
+  // of query points is listed once (j > i); points j >= n_query (halo copies) are
+  // always listed, since their owners compute the mirror pair themselves.
   void build(const CellList& cells, const double* x, const double* y, const double* z, std::size_t n_query,
-             double rc, bool exclude_self);
+             double rc, bool exclude_self, bool half = false);
 
  private:
   std::vector<std::vector<std::uint32_t>> local_;  // per-thread rows, kept to avoid page faults

@@ -134,7 +134,7 @@ void Simulation::rebuild_neighbours() {
   fluid_halo_.fill(f.kind);
   fluid_halo_.fill(f.id);
   fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
-  fluid_pairs_.build(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned, cell_size_, true);
+  fluid_pairs_.build(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned, cell_size_, true, /*half=*/true);
   rebuild_contact_neighbours();
 }
 
@@ -196,12 +196,13 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   lap(kVoidage);
   update_pressure_and_h();
   for (auto* v : {&f.h, &f.inv_h, &f.P, &f.cs}) fluid_halo_.fill(*v);
-  omega_bounded_ = compute_density_rate(f, fluid_pairs_);
+  omega_bounded_ = compute_density_rate(f, fluid_pairs_, pair_scratch_);
   fluid_halo_.fill(f.omega);
   fluid_halo_.fill(f.p_term);
   lap(kDensity);
   compute_fluid_acceleration(f, fluid_pairs_,
-                             MomentumParams{scene_.fluid.viscosity, scene_.fluid.alpha_artificial, scene_.time.cfl});
+                             MomentumParams{scene_.fluid.viscosity, scene_.fluid.alpha_artificial, scene_.time.cfl},
+                             pair_scratch_);
   for (auto* v : {&f.thx, &f.thy, &f.thz}) fluid_halo_.fill(*v);
   lap(kMomentum);
   interpolate_fluid_at_spheres(s, f, fluid_cells_);

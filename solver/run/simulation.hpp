@@ -16,6 +16,7 @@
 #include "run/scene.hpp"
 #include "sph/equation_of_state.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/pair_accumulator.hpp"
 
 namespace sphdem {
 
@@ -99,7 +100,8 @@ class Simulation {
   DemParticles dem_;
   PeriodicHalo fluid_halo_, dem_halo_;
   CellList fluid_cells_, dem_cells_, contact_cells_;
-  NeighbourList fluid_pairs_;  // fluid-fluid pairs within the cell size
+  NeighbourList fluid_pairs_;  // fluid-fluid pairs within the cell size, each owned pair once
+  PairAccumulator pair_scratch_;
   ContactNeighbourList contacts_;
   std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;

@@ -1,16 +1,17 @@
 #pragma once
 #include "domain/neighbour_list.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/pair_accumulator.hpp"
 
 namespace sphdem {
 
-// For every owned SPH particle a (fluid and wall), over its neighbours b (owned + halo,
-// self excluded from the list and added here):
+// For every owned SPH particle a (fluid and wall), over its neighbours b (owned + halo),
+// from a half neighbour list (each owned pair once, added to both; the self term added here):
 //   Omega_a = 1 - (dh/drho) sum_b m_b dW_ab(h_a)/dh,  dh/drho = -h/(3 rho)      (2.54)
 //   drho_a/dt = (1/Omega_a) sum_b m_b u_ab . grad_a W_ab(h_a)                      (2.53)
 // Also stores p_term = P/(Omega rho^2) for the momentum pass (P must be current).
 // Omega is kept within [0.5, 2] (it can drift near the free surface, where the kernel
 // sum is truncated); returns how many particles hit that bound.
-std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& nl);
+std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& scratch);
 
 }  // namespace sphdem

@@ -1,6 +1,7 @@
 #pragma once
 #include "domain/neighbour_list.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/pair_accumulator.hpp"
 
 namespace sphdem {
 
@@ -17,6 +18,9 @@ struct MomentumParams {
 //             + sum_b m_b (mu_a + mu_b) r_ab . gradW_ab / (rho_a rho_b (r^2 + 0.01 h^2)) u_ab
 // The physical viscosity is Morris' term, which carries mu directly (physics.md §1
 // allows it); Monaghan's term with alpha_artificial acts only on approaching pairs.
-void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& nl, const MomentumParams& p);
+// Over a half neighbour list: each owned pair is evaluated once and written to both
+// particles with opposite signs, so the pair forces cancel exactly.
+void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& half, const MomentumParams& p,
+                                PairAccumulator& scratch);
 
 }  // namespace sphdem

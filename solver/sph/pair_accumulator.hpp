@@ -1,0 +1,43 @@
+#pragma once
+// Per-thread accumulation arrays for passes over a half neighbour list: a pair (a, b)
+// of owned particles is visited once and adds to both; each thread adds into its own
+// copy, and the copies are summed afterwards (no atomics, deterministic for a fixed
+// thread count).
+#include <omp.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace sphdem {
+
+class PairAccumulator {
+ public:
+  // `fields` values per particle for n particles, zeroed, one copy per thread.
+  void reset(std::size_t n, int fields) {
+    n_ = n;
+    fields_ = fields;
+    threads_ = omp_get_max_threads();
+    data_.assign(static_cast<std::size_t>(threads_) * n * fields, 0.0);
+  }
+  // The calling thread's row for particle i.
+  double* row(int thread, std::size_t i) { return data_.data() + (thread * n_ + i) * fields_; }
+  // Sum over threads of field k of particle i.
+  double sum(std::size_t i, int k) const {
+    double s = 0.0;
+    for (int t = 0; t < threads_; ++t) s += data_[(t * n_ + i) * fields_ + k];
+    return s;
+  }
+  double max(std::size_t i, int k) const {
+    double m = data_[i * fields_ + k];
+    for (int t = 1; t < threads_; ++t) m = std::max(m, data_[(t * n_ + i) * fields_ + k]);
+    return m;
+  }
+
+ private:
+  std::size_t n_ = 0;
+  int fields_ = 0, threads_ = 1;
+  std::vector<double> data_;
+};
+
+}  // namespace sphdem
