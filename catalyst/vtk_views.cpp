@@ -8,6 +8,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkSOADataArrayTemplate.h>
+#include <vtkTypeInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 
 namespace sphdem {
@@ -62,6 +63,13 @@ vtkSmartPointer<vtkPolyData> point_cloud(const double* x, const double* y, const
   return pd;
 }
 
+vtkSmartPointer<vtkTypeInt64Array> id_view(const std::int64_t* ids, vtkIdType n) {
+  auto a = vtkSmartPointer<vtkTypeInt64Array>::New();
+  a->SetName("id");
+  a->SetArray(const_cast<vtkTypeInt64*>(reinterpret_cast<const vtkTypeInt64*>(ids)), n, 1);
+  return a;
+}
+
 }  // namespace
 
 vtkSmartPointer<vtkPolyData> fluid_view(const FluidParticles& f) {
@@ -77,6 +85,7 @@ vtkSmartPointer<vtkPolyData> fluid_view(const FluidParticles& f) {
   kind->SetName("kind");
   kind->SetArray(const_cast<unsigned char*>(f.kind.data()), n, 1);
   p->AddArray(kind);
+  p->AddArray(id_view(f.id.data(), n));
   return pd;
 }
 
@@ -106,6 +115,7 @@ vtkSmartPointer<vtkPolyData> sphere_view(const DemParticles& s, const std::vecto
   cc->SetArray(c.contacts.data(), n, 1);
   p->AddArray(sp);
   p->AddArray(cc);
+  p->AddArray(id_view(s.id.data(), n));
   return pd;
 }
 

@@ -43,4 +43,4 @@ def catalyst_execute(info):
         if new:
             f.write(",".join(["time"] + ["com_z:" + n for n in names] + ["com_z:all"]) + "\n")
             state["header"] = True
-        f.write(",".join(["%.12g" % info.time] + ["%.12g" % c for c in com] + ["%.12g" % com_all]) + "\n")
+        f.write(",".join(["%.17g" % info.time] + ["%.17g" % c for c in com] + ["%.17g" % com_all]) + "\n")
