@@ -1,41 +1,53 @@
 #include "coupling/interpolation.hpp"
 
-#include "sph/kernel.hpp"
+#include <omp.h>
 
 namespace sphdem {
 
-void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, const CellList& fluid_cells) {
-  const long n = static_cast<long>(s.n_owned);
-  const double rc = fluid_cells.max_cutoff();
+void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, const FluidSpherePairs& pairs,
+                                  const std::vector<std::uint32_t>& halo_source, PairAccumulator& acc) {
+  const std::size_t ns = s.n_owned;
+  const long nf = static_cast<long>(f.n_owned);
+  enum { kS, kEps, kUx, kUy, kUz, kGx, kGy, kGz, kFields };
+  acc.reset(ns, kFields);
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num();
+#pragma omp for schedule(static)
+    for (long b = 0; b < nf; ++b) {
+      if (f.kind[b] != kFluid) continue;
+      const double mb = f.mass[b], vb = mb / f.rho[b];
+      for (std::uint32_t k = pairs.list.begin(b); k < pairs.list.end(b); ++k) {
+        const double w = pairs.w[k];
+        if (w == 0.0) continue;
+        const std::uint32_t j = pairs.list.neighbour[k];
+        const std::uint32_t owner = j < ns ? j : halo_source[j - ns];
+        double* r = acc.row(t, owner);
+        const double vw = vb * w, mw = mb * w;
+        r[kS] += vw;
+        r[kEps] += vw * f.eps[b];
+        r[kUx] += vw * f.vx[b];
+        r[kUy] += vw * f.vy[b];
+        r[kUz] += vw * f.vz[b];
+        r[kGx] += mw * f.thx[b];
+        r[kGy] += mw * f.thy[b];
+        r[kGz] += mw * f.thz[b];
+      }
+    }
+  }
 #pragma omp parallel for schedule(static)
-  for (long j = 0; j < n; ++j) {
-    double S = 0, eps = 0, ux = 0, uy = 0, uz = 0, gx = 0, gy = 0, gz = 0;
-    fluid_cells.for_each_neighbour(s.x[j], s.y[j], s.z[j], rc * rc,
-                                   [&](std::uint32_t b, double, double, double, double r2) {
-                                     if (f.kind[b] != kFluid) return;
-                                     const double w = kernel::w(r2, f.h[b]);
-                                     if (w == 0.0) return;
-                                     const double mw = f.mass[b] * w;
-                                     const double vw = mw / f.rho[b];
-                                     S += vw;
-                                     eps += vw * f.eps[b];
-                                     ux += vw * f.vx[b];
-                                     uy += vw * f.vy[b];
-                                     uz += vw * f.vz[b];
-                                     gx += mw * f.thx[b];
-                                     gy += mw * f.thy[b];
-                                     gz += mw * f.thz[b];
-                                   });
+  for (long j = 0; j < static_cast<long>(ns); ++j) {
+    const double S = acc.sum(j, kS);
     s.shepard[j] = S;
     if (S > 0.0) {
       const double inv = 1.0 / S;
-      s.eps[j] = eps * inv;
-      s.ufx[j] = ux * inv;
-      s.ufy[j] = uy * inv;
-      s.ufz[j] = uz * inv;
-      s.gx[j] = gx * inv;
-      s.gy[j] = gy * inv;
-      s.gz[j] = gz * inv;
+      s.eps[j] = acc.sum(j, kEps) * inv;
+      s.ufx[j] = acc.sum(j, kUx) * inv;
+      s.ufy[j] = acc.sum(j, kUy) * inv;
+      s.ufz[j] = acc.sum(j, kUz) * inv;
+      s.gx[j] = acc.sum(j, kGx) * inv;
+      s.gy[j] = acc.sum(j, kGy) * inv;
+      s.gz[j] = acc.sum(j, kGz) * inv;
     } else {
       s.eps[j] = 1.0;
       s.ufx[j] = s.ufy[j] = s.ufz[j] = s.gx[j] = s.gy[j] = s.gz[j] = 0.0;

@@ -1,16 +1,23 @@
 #pragma once
+#include <cstdint>
+#include <vector>
+
+#include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
-#include "domain/cell_list.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/pair_accumulator.hpp"
 
 namespace sphdem {
 
-// Fluid fields at every owned sphere j, from the mobile fluid particles b (owned +
-// halo), Shepard-normalised with S_j = sum_b (m_b/rho_b) W_jb(h_b)      (2.72):
+// Fluid fields at every owned sphere j, from the mobile fluid particles b, Shepard-
+// normalised with S_j = sum_b (m_b/rho_b) W_jb(h_b)                      (2.72):
 //   (-grad P + div tau)_j = sum_b m_b theta_b W_jb(h_b) / S_j          (2.69)
 //   u_f,j = sum_b (m_b/rho_b) u_b W_jb / S_j,  eps_j likewise          (for 2.74)
-// A sphere with no fluid neighbour (above the free surface) gets S_j = 0, eps_j = 1
-// and no fluid force.
-void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, const CellList& fluid_cells);
+// Scattered from the owned fluid particles' pairs: a pair with a halo sphere adds to
+// its owner (halo_source maps halo index - n_owned to the owned index), which is the
+// same sum over periodic images. A sphere with no fluid neighbour (above the free
+// surface) gets S_j = 0, eps_j = 1 and no fluid force.
+void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, const FluidSpherePairs& pairs,
+                                  const std::vector<std::uint32_t>& halo_source, PairAccumulator& scratch);
 
 }  // namespace sphdem

@@ -1,6 +1,6 @@
 #pragma once
+#include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
-#include "domain/cell_list.hpp"
 #include "sph/fluid_particles.hpp"
 
 namespace sphdem {
@@ -9,8 +9,8 @@ namespace sphdem {
 // of every owned mobile fluid particle a:
 //   f_a / m_a = -(1/rho_a) sum_j (fm_j / S_j) W_aj(h_a)
 // fm_j is the fluid force the sphere received (averaged over the SPH step) and S_j
-// the Shepard sum (2.72) over the same mobile fluid particles, so
-// sum_a f_a + sum_j fm_j = 0 to round-off. Halo spheres must carry fm and shepard.
-void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const CellList& dem_cells);
+// the Shepard sum (2.72) over the same pairs, so sum_a f_a + sum_j fm_j = 0 to
+// round-off. Halo spheres must carry fm and shepard.
+void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs);
 
 }  // namespace sphdem

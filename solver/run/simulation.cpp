@@ -104,10 +104,12 @@ void Simulation::build_initial_state() {
   const double H = scene_.fill_height();
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
     fluid_.h[a] = scene_.fluid.smoothing_factor * dx;
+    fluid_.inv_h[a] = 1.0 / fluid_.h[a];
     fluid_.eps[a] = 1.0;
   }
   rebuild_neighbours();
-  voidage_clamped_ = compute_fluid_voidage(fluid_, dem_, dem_cells_, scene_.voidage_floor);
+  sphere_pairs_.build(fluid_, dem_, dem_cells_);
+  voidage_clamped_ = compute_fluid_voidage(fluid_, dem_, sphere_pairs_, scene_.voidage_floor);
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
     const double P = eos_.rho0 * g * (H - fluid_.z[a]);
     fluid_.rho[a] = eos_.density(P, fluid_.eps[a]);
@@ -130,7 +132,7 @@ void Simulation::rebuild_neighbours() {
   fluid_halo_.build(box, cell_size_, f.x.data(), f.y.data(), f.z.data(), f.n_owned);
   f.resize(f.n_owned + fluid_halo_.n_ghost());
   fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
-  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.rho, &f.eps}) fluid_halo_.fill(*v);
+  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.eps}) fluid_halo_.fill(*v);
   fluid_halo_.fill(f.kind);
   fluid_halo_.fill(f.id);
   fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
@@ -166,7 +168,7 @@ void Simulation::rebuild_contact_neighbours() {
   }
 }
 
-void Simulation::update_pressure_and_h() {
+void Simulation::update_smoothing_length() {
   FluidParticles& f = fluid_;
   const double sigma = scene_.fluid.smoothing_factor;
   const long n = static_cast<long>(f.n_owned);
@@ -174,9 +176,21 @@ void Simulation::update_pressure_and_h() {
   for (long a = 0; a < n; ++a) {
     f.h[a] = sigma * std::cbrt(f.mass[a] / f.rho[a]);  // (2.65)
     f.inv_h[a] = 1.0 / f.h[a];
-    f.P[a] = eos_.pressure(f.rho[a], f.eps[a]);         // (2.58)
-    f.cs[a] = eos_.sound_speed(f.rho[a], f.eps[a]);     // (2.59)
   }
+  fluid_halo_.fill(f.h);
+  fluid_halo_.fill(f.inv_h);
+}
+
+void Simulation::update_pressure() {
+  FluidParticles& f = fluid_;
+  const long n = static_cast<long>(f.n_owned);
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    f.P[a] = eos_.pressure(f.rho[a], f.eps[a]);      // (2.58)
+    f.cs[a] = eos_.sound_speed(f.rho[a], f.eps[a]);  // (2.59)
+  }
+  fluid_halo_.fill(f.P);
+  fluid_halo_.fill(f.cs);
 }
 
 void Simulation::refresh() {
@@ -191,11 +205,13 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   FluidParticles& f = fluid_;
   DemParticles& s = dem_;
   Lap lap{timers_};
-  voidage_clamped_ = compute_fluid_voidage(f, s, dem_cells_, scene_.voidage_floor);
+  update_smoothing_length();
+  if (fluid_cutoff() > cell_size_) rebuild_neighbours();  // h outgrew the bins (margin 5 %)
+  sphere_pairs_.build(f, s, dem_cells_);
+  voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, scene_.voidage_floor);
   fluid_halo_.fill(f.eps);
   lap(kVoidage);
-  update_pressure_and_h();
-  for (auto* v : {&f.h, &f.inv_h, &f.P, &f.cs}) fluid_halo_.fill(*v);
+  update_pressure();
   omega_bounded_ = compute_density_rate(f, fluid_pairs_, pair_scratch_);
   fluid_halo_.fill(f.omega);
   fluid_halo_.fill(f.p_term);
@@ -205,7 +221,7 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
                              pair_scratch_);
   for (auto* v : {&f.thx, &f.thy, &f.thz}) fluid_halo_.fill(*v);
   lap(kMomentum);
-  interpolate_fluid_at_spheres(s, f, fluid_cells_);
+  interpolate_fluid_at_spheres(s, f, sphere_pairs_, dem_halo_.source(), sphere_scratch_);
   lap(kInterp);
   if (hold_spheres) {
     // Held spheres: the force they feel now is what the fluid gets back.
@@ -226,7 +242,7 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
     f.ay[a] = mobile ? f.thy[a] + g[1] : 0.0;
     f.az[a] = mobile ? f.thz[a] + g[2] : 0.0;
   }
-  add_reaction_on_fluid(f, s, dem_cells_);
+  add_reaction_on_fluid(f, s, sphere_pairs_);
   lap(kReaction);
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/fluid_sphere_pairs.hpp"
 #include "coupling/voidage_grid.hpp"
 #include "dem/contact_forces.hpp"
 #include "dem/dem_particles.hpp"
@@ -85,7 +86,8 @@ class Simulation {
   void advance(bool hold_spheres);
   void rebuild_neighbours();
   void rebuild_contact_neighbours();
-  void update_pressure_and_h();
+  void update_smoothing_length();
+  void update_pressure();
   void compute_fluid_side(bool hold_spheres);
   void dem_half(double dt, bool first_half);
   void dem_forces(bool accumulate_mean, double weight);
@@ -102,6 +104,8 @@ class Simulation {
   CellList fluid_cells_, dem_cells_, contact_cells_;
   NeighbourList fluid_pairs_;  // fluid-fluid pairs within the cell size, each owned pair once
   PairAccumulator pair_scratch_;
+  FluidSpherePairs sphere_pairs_;  // fluid-sphere pairs of the step with their kernel values
+  PairAccumulator sphere_scratch_;
   ContactNeighbourList contacts_;
   std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "coupling/fluid_sphere_pairs.hpp"
 #include "coupling/interpolation.hpp"
 #include "coupling/reaction.hpp"
 #include "coupling/voidage.hpp"
@@ -23,6 +24,8 @@ struct Config {
   DemParticles s;
   PeriodicHalo fh, sh;
   CellList fcells, scells;
+  FluidSpherePairs pairs;
+  PairAccumulator scratch;
   double cutoff = 0;
 };
 
@@ -49,6 +52,7 @@ void build(Config& c, int n_spheres, unsigned seed) {
         f.rho[k] = rho0 * (0.95 + 0.05 * u(rng));
         f.mass[k] = rho0 * dx * dx * dx;
         f.h[k] = 1.5 * std::cbrt(f.mass[k] / f.rho[k]);
+        f.inv_h[k] = 1.0 / f.h[k];
         f.vx[k] = u(rng);
         f.vy[k] = u(rng);
         f.vz[k] = u(rng);
@@ -72,7 +76,7 @@ void build(Config& c, int n_spheres, unsigned seed) {
   c.fh.build(c.box, c.cutoff, f.x.data(), f.y.data(), f.z.data(), f.n_owned);
   f.resize(f.n_owned + c.fh.n_ghost());
   c.fh.fill_positions(f.x.data(), f.y.data(), f.z.data());
-  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.rho, &f.thx, &f.thy, &f.thz}) c.fh.fill(*v);
+  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.thx, &f.thy, &f.thz}) c.fh.fill(*v);
   c.fh.fill(f.kind);
   c.sh.build(c.box, c.cutoff, s.x.data(), s.y.data(), s.z.data(), s.n_owned);
   s.resize(s.n_owned + c.sh.n_ghost());
@@ -80,7 +84,8 @@ void build(Config& c, int n_spheres, unsigned seed) {
   c.sh.fill(s.radius);
   c.fcells.build(f.x.data(), f.y.data(), f.z.data(), f.size(), c.cutoff, 2);
   c.scells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), c.cutoff, 2);
-  compute_fluid_voidage(f, s, c.scells, 0.05);
+  c.pairs.build(f, s, c.scells);
+  compute_fluid_voidage(f, s, c.pairs, 0.05);
   c.fh.fill(f.eps);
 }
 
@@ -93,7 +98,7 @@ TEST(Coupling, ActionAndReactionCancelToRoundOff) {
     build(c, 25, seed);
     FluidParticles& f = c.f;
     DemParticles& s = c.s;
-    interpolate_fluid_at_spheres(s, f, c.fcells);
+    interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch);
     std::mt19937 rng(seed + 100);
     std::uniform_real_distribution<double> u(-1e-8, 1e-8);
     double fsum[3] = {0, 0, 0}, fabs_sum = 0;
@@ -111,7 +116,7 @@ TEST(Coupling, ActionAndReactionCancelToRoundOff) {
     std::fill(f.ax.begin(), f.ax.end(), 0.0);
     std::fill(f.ay.begin(), f.ay.end(), 0.0);
     std::fill(f.az.begin(), f.az.end(), 0.0);
-    add_reaction_on_fluid(f, s, c.scells);
+    add_reaction_on_fluid(f, s, c.pairs);
     double rsum[3] = {0, 0, 0};
     for (std::size_t a = 0; a < f.n_owned; ++a) {
       if (f.kind[a] == kWall) {
@@ -139,7 +144,7 @@ TEST(Coupling, ShepardInterpolationIsExactForConstants) {
     f.thy[a] = 0.0;
     f.thz[a] = 9.81;
   }
-  interpolate_fluid_at_spheres(c.s, f, c.fcells);
+  interpolate_fluid_at_spheres(c.s, f, c.pairs, c.sh.source(), c.scratch);
   for (std::size_t j = 0; j < c.s.n_owned; ++j) {
     EXPECT_NEAR(c.s.ufx[j], 0.25, 1e-14);
     EXPECT_NEAR(c.s.ufy[j], -1.5, 1e-14);
@@ -166,13 +171,15 @@ TEST(Coupling, VoidageDeficitIntegratesToSolidVolume) {
     f.z[a] = (std::floor(f.z[a] / dx) + 0.5) * dx;
     f.rho[a] = 1000.0;
     f.h[a] = 1.5 * dx;
+    f.inv_h[a] = 1.0 / f.h[a];
   }
   s.x[0] = 0.8e-3;
   s.y[0] = 0.8e-3;
   s.z[0] = 1.0e-3;
   s.resize(1);
   c.scells.build(s.x.data(), s.y.data(), s.z.data(), 1, c.cutoff, 2);
-  compute_fluid_voidage(f, s, c.scells, 0.05);
+  c.pairs.build(f, s, c.scells);
+  compute_fluid_voidage(f, s, c.pairs, 0.05);
   double deficit = 0;
   for (std::size_t a = 0; a < f.n_owned; ++a) deficit += f.mass[a] / f.rho[a] * (1.0 - f.eps[a]);
   EXPECT_NEAR(deficit / s.volume(0), 1.0, 2e-3);
