@@ -19,7 +19,7 @@ inline void fluid_force_on_sphere(const DemParticles& s, std::size_t j, const La
   const double usy = eps * (s.ufy[j] - s.vy[j]);
   const double usz = eps * (s.ufz[j] - s.vz[j]);
   const double us = std::sqrt(usx * usx + usy * usy + usz * usz);
-  const double c = law.coefficient(eps, us, 2.0 * s.radius[j], fluid);
+  const double c = drag::drag_coefficient(law, eps, us, 2.0 * s.radius[j], s.d_sauter[j], fluid);
   const double V = s.volume(j);
   fx = V * s.gx[j] + c * usx;
   fy = V * s.gy[j] + c * usy;

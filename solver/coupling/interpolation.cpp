@@ -8,7 +8,7 @@ void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, cons
                                   const std::vector<std::uint32_t>& halo_source, PairAccumulator& acc) {
   const std::size_t ns = s.n_owned;
   const long nf = static_cast<long>(f.n_owned);
-  enum { kS, kEps, kUx, kUy, kUz, kGx, kGy, kGz, kFields };
+  enum { kS, kEps, kUx, kUy, kUz, kGx, kGy, kGz, kDs, kDw, kFields };
   acc.reset(ns, kFields);
 #pragma omp parallel
   {
@@ -32,6 +32,10 @@ void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, cons
         r[kGx] += mw * f.thx[b];
         r[kGy] += mw * f.thy[b];
         r[kGz] += mw * f.thz[b];
+        if (f.d_sauter[b] > 0.0) {  // Sauter mean where there are solids, Shepard-averaged
+          r[kDs] += vw * f.d_sauter[b];
+          r[kDw] += vw;
+        }
       }
     }
   }
@@ -48,7 +52,10 @@ void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, cons
       s.gx[j] = acc.sum(j, kGx) * inv;
       s.gy[j] = acc.sum(j, kGy) * inv;
       s.gz[j] = acc.sum(j, kGz) * inv;
+      const double dw = acc.sum(j, kDw);
+      s.d_sauter[j] = dw > 0.0 ? acc.sum(j, kDs) / dw : 2.0 * s.radius[j];
     } else {
+      s.d_sauter[j] = 2.0 * s.radius[j];
       s.eps[j] = 1.0;
       s.ufx[j] = s.ufy[j] = s.ufz[j] = s.gx[j] = s.gy[j] = s.gz[j] = 0.0;
     }

@@ -13,6 +13,7 @@ namespace sphdem {
 // normalised with S_j = sum_b (m_b/rho_b) W_jb(h_b)                      (2.72):
 //   (-grad P + div tau)_j = sum_b m_b theta_b W_jb(h_b) / S_j          (2.69)
 //   u_f,j = sum_b (m_b/rho_b) u_b W_jb / S_j,  eps_j likewise          (for 2.74)
+//   and the local Sauter mean diameter (2.80) for the polydisperse drag
 // Scattered from the owned fluid particles' pairs: a pair with a halo sphere adds to
 // its owner (halo_source maps halo index - n_owned to the owned index), which is the
 // same sum over periodic images. A sphere with no fluid neighbour (above the free

@@ -8,9 +8,15 @@ std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, cons
   std::size_t clamped = 0;
 #pragma omp parallel for schedule(static) reduction(+ : clamped)
   for (long a = 0; a < n; ++a) {
-    double solid = 0.0;
-    for (std::uint32_t k = pairs.list.begin(a); k < pairs.list.end(a); ++k)
-      solid += s.volume(pairs.list.neighbour[k]) * pairs.w[k];
+    double solid = 0.0, solid_over_d = 0.0;
+    for (std::uint32_t k = pairs.list.begin(a); k < pairs.list.end(a); ++k) {
+      const std::uint32_t j = pairs.list.neighbour[k];
+      const double vw = s.volume(j) * pairs.w[k];
+      solid += vw;
+      solid_over_d += vw / (2.0 * s.radius[j]);
+    }
+    // Sauter mean (sum_i x_i / d_i)^-1 with the kernel-weighted volume fractions x_i (2.80)
+    f.d_sauter[a] = solid_over_d > 0.0 ? solid / solid_over_d : 0.0;
     double eps = 1.0 - solid;
     if (eps < eps_floor) {
       eps = eps_floor;

@@ -18,6 +18,7 @@ struct DemParticles {
   // fluid fields interpolated at the sphere, held fixed during DEM sub-steps (2.69, 2.74)
   std::vector<double> shepard;        // S_j, eq. 2.72
   std::vector<double> eps;            // voidage at the sphere
+  std::vector<double> d_sauter;       // local Sauter mean diameter at the sphere (2.80)
   std::vector<double> ufx, ufy, ufz;  // fluid velocity at the sphere
   std::vector<double> gx, gy, gz;     // (-grad P + div tau) at the sphere, eq. 2.69
   // forces
@@ -36,7 +37,7 @@ struct DemParticles {
   void for_each_field(F&& f) {
     f("species", species); f("rigid_group", rigid_group); f("id", id);
     f("x", x); f("y", y); f("z", z); f("vx", vx); f("vy", vy); f("vz", vz);
-    f("radius", radius); f("mass", mass); f("shepard", shepard); f("eps", eps);
+    f("radius", radius); f("mass", mass); f("shepard", shepard); f("eps", eps); f("d_sauter", d_sauter);
     f("ufx", ufx); f("ufy", ufy); f("ufz", ufz); f("gx", gx); f("gy", gy); f("gz", gz);
     f("fx", fx); f("fy", fy); f("fz", fz); f("fmx", fmx); f("fmy", fmy); f("fmz", fmz);
     f("cx", cx); f("cy", cy); f("cz", cz); f("ax", ax); f("ay", ay); f("az", az);

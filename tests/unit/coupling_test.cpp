@@ -184,3 +184,26 @@ TEST(Coupling, VoidageDeficitIntegratesToSolidVolume) {
   for (std::size_t a = 0; a < f.n_owned; ++a) deficit += f.mass[a] / f.rho[a] * (1.0 - f.eps[a]);
   EXPECT_NEAR(deficit / s.volume(0), 1.0, 2e-3);
 }
+
+// The local Sauter mean diameter (2.80) carried to the spheres: exactly d for one size,
+// and between the sizes (the volume-weighted harmonic mean) for a mixture.
+TEST(Coupling, SauterMeanDiameterAtSpheres) {
+  Config c;
+  build(c, 25, 5);
+  FluidParticles& f = c.f;
+  DemParticles& s = c.s;
+  for (std::size_t j = 0; j < s.size(); ++j) s.radius[j] = 6e-5;  // one size (halo copies too)
+  c.pairs.build(f, s, c.scells);
+  compute_fluid_voidage(f, s, c.pairs, 0.05);
+  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch);
+  for (std::size_t j = 0; j < s.n_owned; ++j) EXPECT_NEAR(s.d_sauter[j], 1.2e-4, 1e-16);
+  for (std::size_t j = 0; j < s.n_owned; ++j) s.radius[j] = (j % 2) ? 4e-5 : 8e-5;
+  c.sh.fill(s.radius);
+  c.pairs.build(f, s, c.scells);
+  compute_fluid_voidage(f, s, c.pairs, 0.05);
+  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch);
+  for (std::size_t j = 0; j < s.n_owned; ++j) {
+    EXPECT_GT(s.d_sauter[j], 0.8e-4);
+    EXPECT_LT(s.d_sauter[j], 1.6e-4);
+  }
+}

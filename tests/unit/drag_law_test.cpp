@@ -46,13 +46,30 @@ double coulson_richardson_force(double u) {
   return r_over_rho_u2 * kWater.rho * u * u * kPi * kD * kD / 4.0;
 }
 
+// Beetstra et al. (2007) / thesis (2.80-2.88) for sphere diameter d in a mixture of Sauter
+// mean dm: f = beta F_mono 3 pi mu d u, written out from the thesis' (1 + chi_BVK) form
+// (2.85-2.86), not the solver's expanded one.
+double beetstra_force(double eps, double u, double d, double dm) {
+  const double phi = 1.0 - eps;
+  const double re = kWater.rho * u * dm / kWater.mu;                                   // (2.81)
+  const double chi = 0.413 * re / (240.0 * phi + 24.0 * std::pow(eps, 4) * (1.0 + 1.5 * std::sqrt(phi))) *
+                     (1.0 / eps + 3.0 * eps * phi + 8.4 * std::pow(re, -0.343)) /
+                     (1.0 + std::pow(10.0, 3.0 * phi) * std::pow(re, -(1.0 + 4.0 * phi) / 2.0));  // (2.86)
+  const double f_mono = (10.0 * phi / (eps * eps) + eps * eps * (1.0 + 1.5 * std::sqrt(phi))) * (1.0 + chi);
+  const double y = d / dm;                                                             // (2.82)
+  const double beta = (1.0 / f_mono + ((3.0 * eps - 1.0) / 2.0 - 1.0 / f_mono) * y + 0.5 * (1.0 - eps) * y * y) /
+                      eps;                                                             // (2.88)
+  return beta * f_mono * 3.0 * kPi * kWater.mu * d * u;                               // (2.83-2.87)
+}
+
 double reference_force(const DragLaw& law, double eps, double u) {
   const double re = kWater.rho * u * kD / kWater.mu;
   switch (law.index()) {
     case 0: return stokes_force(u);
     case 1: return di_felice_form(dallavalle_cd(re), eps, u);
     case 2: return coulson_richardson_force(u);
-    default: return di_felice_form(brown_lawler_cd(re), eps, u);
+    case 3: return di_felice_form(brown_lawler_cd(re), eps, u);
+    default: return beetstra_force(eps, u, kD, kD);  // a sphere among its own size
   }
 }
 
@@ -60,7 +77,7 @@ double coefficient(const DragLaw& law, double eps, double u) {
   return std::visit([&](const auto& l) { return l.coefficient(eps, u, kD, kWater); }, law);
 }
 
-const DragLaw kLaws[] = {Stokes{}, DiFeliceDallavalle{}, CoulsonRichardson{}, BrownLawler{}};
+const DragLaw kLaws[] = {Stokes{}, DiFeliceDallavalle{}, CoulsonRichardson{}, BrownLawler{}, BeetstraPolydisperse{}};
 
 // ---- tests ------------------------------------------------------------------------
 
@@ -146,7 +163,7 @@ TEST(DragLaw, NameRoundTrip) {
 }
 
 TEST(DragLaw, UnknownNameRejected) {
-  for (const char* bad : {"", "Stokes", "difelice", "di_felice ", "beetstra"}) {
+  for (const char* bad : {"", "Stokes", "difelice", "di_felice ", "Beetstra", "beetstra2007"}) {
     DragLaw law = BrownLawler{};
     EXPECT_FALSE(drag_law_from_name(bad, law)) << '"' << bad << '"';
   }
@@ -164,3 +181,28 @@ TEST(DragLaw, ThesisDiFeliceTerminalSlip) {
 }
 
 }  // namespace
+
+// Polydisperse drag: the size correction of (2.88) for spheres larger and smaller than
+// the local Sauter mean, against the hand-written thesis form; beta = 1 when y = 1.
+TEST(DragLaw, BeetstraPolydisperseMatchesThesisForm) {
+  const BeetstraPolydisperse law;
+  for (double re : {1e-2, 0.5, 5.0, 50.0})
+    for (double eps : {0.5, 0.7, 0.9, 0.99})
+      for (double y : {0.6, 1.0, 1.5, 2.0}) {
+        const double dm = kD, d = y * dm, u = re * kWater.mu / (kWater.rho * dm);
+        const double f = law.coefficient(eps, u, d, dm, kWater) * u;
+        const double expected = beetstra_force(eps, u, d, dm);
+        // same formulas, (1 + chi) form against the expanded one: a few ulp of pow/sqrt
+        EXPECT_NEAR(f, expected, 1e-12 * std::abs(expected)) << "Re " << re << " eps " << eps << " y " << y;
+        if (y == 1.0) {
+          EXPECT_DOUBLE_EQ(BeetstraPolydisperse::beta(eps, BeetstraPolydisperse::f_mono(eps, re), 1.0), 1.0);
+        }
+      }
+  // dilute, creeping: f_mono -> 1 + O(phi), so the drag tends to Stokes (1 % at phi = 1e-4, Re = 1e-4:
+  // 10 phi + 1.5 sqrt(phi) = 1.6 %, hence the 2 % band)
+  const double u = speed_for(1e-4);
+  EXPECT_NEAR(law.coefficient(1.0 - 1e-4, u, kD, kWater) * u / stokes_force(u), 1.0, 0.02);
+  // drag_coefficient passes the Sauter mean to this law only, and falls back to d when unknown
+  EXPECT_DOUBLE_EQ(drag_coefficient(law, 0.8, u, kD, 0.0, kWater), law.coefficient(0.8, u, kD, kD, kWater));
+  EXPECT_DOUBLE_EQ(drag_coefficient(Stokes{}, 0.8, u, kD, 2 * kD, kWater), Stokes{}.coefficient(0.8, u, kD, kWater));
+}
