@@ -385,6 +385,7 @@ void Simulation::advance(bool hold_spheres) {
     sort_owned_by_cell(f, cell_size_ / 2);
     dem_.resize(dem_.n_owned);
     if (dem_.n_owned > 0) sort_owned_by_cell(dem_, cell_size_ / 2);
+    rebuild_contact_neighbours();  // the DEM sub-steps below use the halo and contact list
   }
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {
@@ -462,8 +463,11 @@ void Simulation::check_finite() const {
 }
 
 std::vector<double> Simulation::voidage_on_grid(const GridSpec& grid, double h) const {
-  if (kernel::kSupport * h <= dem_cells_.max_cutoff()) return compute_voidage_grid(dem_, dem_cells_, grid, h);
-  CellList cells;  // the analysis kernel reaches further than the solver's sphere cells
+  // Fresh bins: the spheres have moved since the step's neighbour rebuild, and the halo
+  // must reach the analysis kernel (checked).
+  if (kernel::kSupport * h > dem_halo_.width())
+    throw std::runtime_error("voidage grid: kernel support exceeds the sphere halo width");
+  CellList cells;
   cells.build(dem_.x.data(), dem_.y.data(), dem_.z.data(), dem_.size(), kernel::kSupport * h, 2);
   return compute_voidage_grid(dem_, cells, grid, h);
 }
