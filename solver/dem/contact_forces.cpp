@@ -27,7 +27,7 @@ void ContactNeighbourList::build(const DemParticles& s, const CellList& cells, d
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
                             const LinearSpringDashpot& law, double wall_z) {
   const long n = static_cast<long>(s.n_owned);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 256)  // a parallel region costs more than a few spheres
   for (long i = 0; i < n; ++i) {
     double fx = 0, fy = 0, fz = 0, dmax = 0;
     const double ri = s.radius[i], mi = s.mass[i];

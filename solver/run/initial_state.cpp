@@ -31,8 +31,8 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
   const double dx = sc.fluid.spacing;
   const int nx = static_cast<int>(std::lround(sc.box.length(0) / dx));
   const int ny = static_cast<int>(std::lround(sc.box.length(1) / dx));
-  const int nz = static_cast<int>(std::floor(sc.fill_height() / dx + 1e-6));
-  const int nw = sc.fluid.wall_layers;
+  const int nz = sc.fluid.enabled ? static_cast<int>(std::floor(sc.fill_height() / dx + 1e-6)) : 0;
+  const int nw = sc.fluid.enabled ? sc.fluid.wall_layers : 0;
   const std::size_t n = static_cast<std::size_t>(nx) * ny * (nz + nw);
   f.resize(n);
   f.n_owned = n;

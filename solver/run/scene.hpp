@@ -24,6 +24,7 @@ struct FluidSpec {
   double alpha_artificial = 0.02;  // Monaghan alpha on approaching pairs only
   int gamma = 7;
   int wall_layers = 3;
+  bool enabled = true;  // false: spheres only (dry DEM), no SPH particles
 };
 
 struct SpeciesSpec {

@@ -208,6 +208,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   {
     MapReader r(top.child("fluid"), "fluid", file);
     FluidSpec& f = sc.fluid;
+    f.enabled = r.boolean("enabled", f.enabled);
     f.density = r.number("density", f.density, 0, kInf, true);
     f.viscosity = r.number("viscosity", f.viscosity, 0, kInf, true);
     f.spacing = r.number("spacing", f.spacing, 0, kInf, true);
@@ -433,6 +434,7 @@ std::string scene_to_yaml(const Scene& sc) {
   e << YAML::Key << "fill_height" << YAML::Value << f.fill_height << YAML::Key << "expected_speed" << YAML::Value << f.expected_speed;
   e << YAML::Key << "sound_speed" << YAML::Value << f.sound_speed << YAML::Key << "alpha_artificial" << YAML::Value << f.alpha_artificial;
   e << YAML::Key << "gamma" << YAML::Value << f.gamma << YAML::Key << "wall_layers" << YAML::Value << f.wall_layers;
+  e << YAML::Key << "enabled" << YAML::Value << f.enabled;
   e << YAML::EndMap;
   e << YAML::Key << "species" << YAML::Value << YAML::BeginSeq;
   for (const auto& s : sc.species)

@@ -39,6 +39,9 @@ enum Pass { kIntegrate, kDem, kNeighbours, kVoidage, kDensity, kMomentum, kInter
 // Margin on the largest kernel support when binning, so that h may grow a little
 // between rebuilds.
 constexpr double kCutoffMargin = 1.05;
+// Below this many spheres the DEM sub-step loops run on one thread: a parallel region
+// costs more than the work (a single settling sphere takes ~10^5 sub-steps).
+constexpr long kMinParallelSpheres = 256;
 // Steps between re-sorting the owned particles into cell order.
 constexpr int kSortInterval = 20;
 
@@ -92,6 +95,11 @@ std::size_t Simulation::wall_count() const { return fluid_.n_owned - fluid_count
 double Simulation::fluid_cutoff() const {
   double hmax = 0;
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) hmax = std::max(hmax, fluid_.h[a]);
+  if (hmax == 0.0) {  // no fluid (dry DEM): bin at the contact reach instead
+    double rmax = 0;
+    for (std::size_t i = 0; i < dem_.n_owned; ++i) rmax = std::max(rmax, dem_.radius[i]);
+    return std::max(2.0 * rmax * (1.0 + scene_.contact.skin), 1e-12);
+  }
   return kernel::kSupport * hmax;
 }
 
@@ -257,7 +265,7 @@ void Simulation::dem_forces(bool accumulate_mean, double weight) {
   const auto& g = scene_.gravity;
   std::visit(
       [&](const auto& law) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
         for (long j = 0; j < n; ++j) {
           double fx, fy, fz;
           fluid_force_on_sphere(s, j, law, drag_fluid_, fx, fy, fz);
@@ -316,16 +324,25 @@ void Simulation::dem_half(double dt, bool first_half) {
     std::fill(s.fmz.begin(), s.fmz.end(), 0.0);
   }
   const double half_skin = 0.5 * contacts_.skin;
+  a_old_x_.resize(n);
+  a_old_y_.resize(n);
+  a_old_z_.resize(n);
   for (int k = 0; k < per_half; ++k) {
     double max_disp2 = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : max_disp2)
+#pragma omp parallel for schedule(static) reduction(max : max_disp2) if (n > kMinParallelSpheres)
     for (long j = 0; j < n; ++j) {
-      s.vx[j] += 0.5 * h * s.ax[j];
-      s.vy[j] += 0.5 * h * s.ay[j];
-      s.vz[j] += 0.5 * h * s.az[j];
-      s.x[j] += h * s.vx[j];
-      s.y[j] += h * s.vy[j];
-      s.z[j] += h * s.vz[j];
+      // x += h (v + h a/2); v -> v + h a_old, the predicted end-of-step velocity at which
+      // the velocity-dependent forces (dashpot, drag) are evaluated: second order, where
+      // the half-step velocity would make the dashpot first order (e_n off by ~eta h/2).
+      s.x[j] += h * (s.vx[j] + 0.5 * h * s.ax[j]);
+      s.y[j] += h * (s.vy[j] + 0.5 * h * s.ay[j]);
+      s.z[j] += h * (s.vz[j] + 0.5 * h * s.az[j]);
+      s.vx[j] += h * s.ax[j];
+      s.vy[j] += h * s.ay[j];
+      s.vz[j] += h * s.az[j];
+      a_old_x_[j] = s.ax[j];
+      a_old_y_[j] = s.ay[j];
+      a_old_z_[j] = s.az[j];
       const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
       max_disp2 = std::max(max_disp2, dx * dx + dy * dy + dz * dz);
     }
@@ -336,11 +353,11 @@ void Simulation::dem_half(double dt, bool first_half) {
       for (auto* v : {&s.vx, &s.vy, &s.vz}) dem_halo_.fill(*v);
     }
     dem_forces(true, 0.5 * h / dt);
-#pragma omp parallel for schedule(static)
-    for (long j = 0; j < n; ++j) {
-      s.vx[j] += 0.5 * h * s.ax[j];
-      s.vy[j] += 0.5 * h * s.ay[j];
-      s.vz[j] += 0.5 * h * s.az[j];
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
+    for (long j = 0; j < n; ++j) {  // v_n + h (a_old + a_new)/2
+      s.vx[j] += 0.5 * h * (s.ax[j] - a_old_x_[j]);
+      s.vy[j] += 0.5 * h * (s.ay[j] - a_old_y_[j]);
+      s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[j]);
     }
   }
 }

@@ -108,6 +108,7 @@ class Simulation {
   PairAccumulator sphere_scratch_;
   ContactNeighbourList contacts_;
   std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
+  std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // sphere accelerations of the previous sub-step
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
   int n_groups_ = 0;
   double time_ = 0, dt_sph_ = 0, dt_dem_ = 0, dt_dem_max_ = 0, t_contact_ = 0;
