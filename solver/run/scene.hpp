@@ -10,6 +10,7 @@
 #include "coupling/drag_laws.hpp"
 #include "dem/contact_model.hpp"
 #include "domain/box.hpp"
+#include "run/size_distribution.hpp"
 
 namespace sphdem {
 
@@ -28,8 +29,16 @@ struct FluidSpec {
 
 struct SpeciesSpec {
   std::string name;
-  double diameter = 0.0;  // (m)
+  // (m) A single-size species: the diameter of every sphere. With a size law: the Sauter
+  // mean d32 of the law, a representative value only (the Kynch line, `check`); each
+  // sphere carries its own radius in DemParticles.
+  double diameter = 0.0;
   double density = 0.0;   // (kg/m^3)
+  SizeDistribution size;  // law kSingle: every sphere has `diameter`
+
+  bool monodisperse() const { return size.law == SizeLaw::kSingle; }
+  double d_min() const { return monodisperse() ? diameter : size.min; }
+  double d_max() const { return monodisperse() ? diameter : size.max; }
 };
 
 struct ParticleGroupSpec {

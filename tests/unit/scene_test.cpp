@@ -51,6 +51,14 @@ fluid:
 species:
   - {name: glass, diameter: 1.0e-4, density: 2500}
   - {name: light, diameter: 1.2e-4, density: 1500}
+  - name: sand
+    density: 2650
+    size_distribution: {law: lognormal, median: 1.1e-4, sigma_ln: 0.2, min: 7.0e-5, max: 1.9e-4}
+  - name: sieved
+    density: 2600
+    size_distribution: {law: list, diameters: [9.0e-5, 1.3e-4], fractions: [0.35, 0.65], basis: volume}
+  - {name: flat, density: 2400, size_distribution: {law: uniform, min: 8.0e-5, max: 1.1e-4}}
+  - {name: bell, density: 2300, size_distribution: {law: normal, mean: 1.0e-4, std: 1.3e-5, min: 7.0e-5, max: 1.3e-4}}
 particles:
   - type: lattice
     species: glass
@@ -166,6 +174,17 @@ void expect_same_scene(const Scene& a, const Scene& b, double rel) {
     EXPECT_EQ(a.species[s].name, b.species[s].name);
     same(a.species[s].diameter, b.species[s].diameter, "species.diameter");
     same(a.species[s].density, b.species[s].density, "species.density");
+    const SizeDistribution &p = a.species[s].size, &q = b.species[s].size;
+    EXPECT_EQ(p.law, q.law);
+    EXPECT_EQ(p.diameters, q.diameters);
+    EXPECT_EQ(p.fractions, q.fractions);
+    EXPECT_EQ(p.by_volume, q.by_volume);
+    same(p.mean, q.mean, "size_distribution.mean");
+    same(p.std, q.std, "size_distribution.std");
+    same(p.median, q.median, "size_distribution.median");
+    same(p.sigma_ln, q.sigma_ln, "size_distribution.sigma_ln");
+    same(p.min, q.min, "size_distribution.min");
+    same(p.max, q.max, "size_distribution.max");
   }
   ASSERT_EQ(a.particles.size(), b.particles.size());
   for (std::size_t g = 0; g < a.particles.size(); ++g) {
@@ -507,8 +526,11 @@ TEST(SceneRoundTrip, ReloadsToTheSameScene) {
   }
   // The non-default values of kFull survived (guards against a comparison of defaults).
   const Scene b = load_scene_text(scene_to_yaml(load_scene_text(kFull, kFile)), "case.yaml");
-  EXPECT_EQ(b.particles.size(), 2u);
+  ASSERT_EQ(b.particles.size(), 2u);
   EXPECT_EQ(b.particles[0].kind, ParticleGroupSpec::Kind::kLattice);
+  EXPECT_EQ(b.species[2].size.law, SizeLaw::kLognormal);
+  EXPECT_EQ(b.species[3].size.law, SizeLaw::kList);
+  EXPECT_TRUE(b.species[3].size.by_volume);
   EXPECT_EQ(b.particles[0].voidage, 0.85);
   EXPECT_TRUE(b.particles[0].rigid);
   EXPECT_EQ(b.contact.normal.restitution, 0.7);
@@ -610,6 +632,83 @@ particles:
 }
 
 // ---------------------------------------------------------------------------------
+// Size laws (species.N.size_distribution)
+
+TEST(SceneSizeLaws, LoadedAsGiven) {
+  const Scene sc = load_scene_text(kFull, kFile);
+  const SpeciesSpec& sand = sc.species[2];
+  EXPECT_EQ(sand.size.law, SizeLaw::kLognormal);
+  EXPECT_EQ(sand.size.median, 1.1e-4);
+  EXPECT_EQ(sand.size.sigma_ln, 0.2);
+  EXPECT_EQ(sand.d_min(), 7e-5);
+  EXPECT_EQ(sand.d_max(), 1.9e-4);
+  EXPECT_DOUBLE_EQ(sand.diameter, sauter_mean(sand.size));  // the representative diameter
+  const SpeciesSpec& sieved = sc.species[3];
+  EXPECT_EQ(sieved.size.law, SizeLaw::kList);
+  EXPECT_TRUE(sieved.size.by_volume);
+  EXPECT_EQ(sieved.size.diameters, (std::vector<double>{9e-5, 1.3e-4}));
+  EXPECT_EQ(sieved.size.fractions, (std::vector<double>{0.35, 0.65}));
+  EXPECT_EQ(sieved.d_min(), 9e-5);
+  EXPECT_EQ(sieved.d_max(), 1.3e-4);
+  EXPECT_EQ(sc.species[4].size.law, SizeLaw::kUniform);
+  EXPECT_EQ(sc.species[5].size.law, SizeLaw::kNormal);
+  EXPECT_EQ(sc.species[5].size.std, 1.3e-5);
+  EXPECT_TRUE(sc.species[0].monodisperse());
+  EXPECT_EQ(sc.species[0].d_min(), 1e-4);
+}
+
+TEST(SceneSizeLaws, Errors) {
+  const std::string sp = "species:\n  - {name: s, density: 2500, size_distribution: ";
+  auto law = [&](const std::string& m) { return sp + m + "}\n"; };
+  error_of("species: [{name: s, density: 2500, diameter: 1.0e-4, size_distribution: {law: uniform, min: 1, max: 2}}]\n",
+           {kFile, "'species.0.size_distribution'", "not both"});
+  error_of("species: [{name: s, density: 2500}]\n", {"'species.0.diameter'", "required", "size_distribution"});
+  error_of(law("{min: 1.0e-4}"), {"'species.0.size_distribution.law'", "required"});
+  error_of(law("{law: weibull}"), {"'species.0.size_distribution.law'", "list, uniform, normal, lognormal", "weibull"});
+  error_of(law("{law: uniform, min: 1.0e-4, max: 2.0e-4, mean: 1.5e-4}"),
+           {"'species.0.size_distribution.mean'", "unknown key", "allowed here"});
+  error_of(law("{law: uniform, min: 2.0e-4, max: 1.0e-4}"), {"'species.0.size_distribution.max'", "> min"});
+  error_of(law("{law: uniform, min: 0, max: 1.0e-4}"), {"'species.0.size_distribution.min'", "(0, inf]"});
+  error_of(law("{law: uniform, max: 1.0e-4}"), {"'species.0.size_distribution.min'", "required"});
+  error_of(law("{law: list, diameters: [1.0e-4, 2.0e-4], fractions: [0.5], basis: number}"),
+           {"'species.0.size_distribution.fractions'", "one entry per diameter"});
+  error_of(law("{law: list, diameters: [1.0e-4, 2.0e-4], fractions: [0.5, 0.6], basis: number}"),
+           {"'species.0.size_distribution.fractions'", "sum to 1", "1.1"});
+  error_of(law("{law: list, diameters: [1.0e-4, -2.0e-4], fractions: [0.5, 0.5], basis: number}"),
+           {"'species.0.size_distribution.diameters.1'", "(0, inf]"});
+  error_of(law("{law: list, diameters: [1.0e-4, x], fractions: [0.5, 0.5], basis: number}"),
+           {"'species.0.size_distribution.diameters.1'", "a number"});
+  error_of(law("{law: list, diameters: [1.0e-4, 1.0e-4], fractions: [0.5, 0.5], basis: number}"),
+           {"'species.0.size_distribution.diameters'", "given twice"});
+  error_of(law("{law: list, diameters: [], fractions: [], basis: number}"),
+           {"'species.0.size_distribution.diameters'", "non-empty list"});
+  error_of(law("{law: list, diameters: [1.0e-4], fractions: [1]}"),
+           {"'species.0.size_distribution.basis'", "required", "number or volume"});
+  error_of(law("{law: list, diameters: [1.0e-4], fractions: [1], basis: mass}"),
+           {"'species.0.size_distribution.basis'", "number, volume"});
+  error_of(law("{law: normal, mean: 1.0e-4, min: 5.0e-5, max: 1.5e-4}"), {"'species.0.size_distribution.std'", "required"});
+  error_of(law("{law: normal, mean: 1.0e-4, std: 1.0e-5, min: 1.5e-4, max: 1.6e-4}"),
+           {"'species.0.size_distribution.min'", "keeps only", "at least 0.1 %"});
+  error_of(law("{law: lognormal, median: 1.0e-4, sigma_ln: 0, min: 5.0e-5, max: 1.5e-4}"),
+           {"'species.0.size_distribution.sigma_ln'", "(0, inf]"});
+  error_of(law("{law: lognormal, median: 1.0e-4, sigma_ln: 0.2, min: 5.0e-5, max: 1.5e-4, std: 1}"),
+           {"'species.0.size_distribution.std'", "unknown key"});
+  error_of(sp + "5}\n", {"'species.0.size_distribution'", "map"});
+  // Lattice and single groups need one diameter.
+  const std::string psd = law("{law: uniform, min: 8.0e-5, max: 1.2e-4}");
+  error_of(psd + "particles: [{type: lattice, species: s, min: [0, 0, 0], max: [0.004, 0.004, 0.002]}]\n",
+           {"'particles.0.species'", "size_distribution", "lattice"});
+  error_of(psd + "particles: [{type: single, species: s}]\n", {"'particles.0.species'", "size_distribution"});
+}
+
+TEST(SceneSizeLaws, ExpectedSpeedFromTheLargestSphere) {
+  const std::string yaml = "species: [{name: s, density: 2500, size_distribution: {law: uniform, min: 5.0e-5, "
+                           "max: 3.0e-4}}]\n";
+  const Scene sc = load_scene_text(yaml, kFile);
+  EXPECT_DOUBLE_EQ(sc.fluid.expected_speed, 1500 * 9.81 * 3e-4 * 3e-4 / (18 * 8.9e-4));
+}
+
+// ---------------------------------------------------------------------------------
 // cases/README.md stays true to the loader
 
 TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
@@ -626,6 +725,14 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
       {"particles.N.", edit(kBase, "type: single,", "type: single, zz_unknown: 1,")},
       {"particles.N.", edit(kBase, "type: single, species: glass, position: [0.002, 0.002, 0.0048]",
                             "type: lattice, species: glass, zz_unknown: 1")},
+      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: list, "
+                                       "diameters: [1], fractions: [1], basis: number, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: uniform, "
+                                       "min: 1, max: 2, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: normal, "
+                                       "mean: 1, std: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: lognormal, "
+                                       "median: 1, sigma_ln: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
       {"contact.", "contact: {zz_unknown: 1}\n"},
       {"drag.", "drag: {zz_unknown: 1}\n"},
       {"coupling.", "coupling: {zz_unknown: 1}\n"},
@@ -646,6 +753,6 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
   EXPECT_GT(n, 40u);
   for (const auto& p : shipped_cases())
     EXPECT_TRUE(contains(readme, "`" + p.filename().string() + "`")) << "cases/README.md does not list " << p;
-  for (const auto& c : RunLog::columns({SpeciesSpec{"NAME", 1e-4, 2500}}))
+  for (const auto& c : RunLog::columns({SpeciesSpec{"NAME", 1e-4, 2500, {}}}))
     EXPECT_TRUE(contains(readme, "`" + c + "`")) << "cases/README.md does not list log column " << c;
 }
