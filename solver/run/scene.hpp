@@ -42,12 +42,15 @@ struct SpeciesSpec {
 };
 
 struct ParticleGroupSpec {
-  enum class Kind { kSingle, kLattice };
+  enum class Kind { kSingle, kLattice, kRandom };
   Kind kind = Kind::kSingle;
-  std::string species;
+  std::string species;                      // the species (random: the first of `mixture`)
   std::array<double, 3> position{0, 0, 0};  // single: centre
-  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};  // lattice: region
-  double voidage = 0.9;                     // lattice: target voidage of the block
+  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};  // lattice, random: region
+  double voidage = 0.9;                     // lattice, random: target voidage of the region
+  std::vector<std::string> mixture;         // random: species names (one or more)
+  std::vector<double> fractions;            // random: number fractions of `mixture` (sum 1)
+  std::int64_t seed = 0;                    // random: seed of the positions and diameters
   std::array<double, 3> velocity{0, 0, 0};
   bool rigid = false;  // constant-porosity block: moves rigidly (thesis §4.5)
 };
@@ -81,7 +84,7 @@ struct InSituSpec {
   std::vector<std::string> pipelines{"voidage_height", "interfaces", "com_tracks", "snapshots"};
   int snapshot_every = 5;            // analyses between PNG snapshots
   double grid_spacing = 0.0;         // voidage grid spacing (m); 0 = fluid.spacing
-  double reference_velocity = -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the lattice
+  double reference_velocity = -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the first block or suspension
   bool enabled = true;
 };
 

@@ -97,6 +97,12 @@ class MapReader {
     }
     return v;
   }
+  std::int64_t whole64(const std::string& k, std::int64_t def, std::int64_t lo, std::int64_t hi) {
+    std::int64_t v = def;
+    if (has(k)) v = scalar<std::int64_t>(k, "a whole number");
+    if (v < lo || v > hi) fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
+    return v;
+  }
   // A number the file must give (no default).
   double required(const std::string& k, double lo, double hi, bool lo_open = false) {
     if (!has(k)) fail(key(k), fmt::format("is required: a number in {}{}, {}]", lo_open ? "(" : "[", lo, hi));
@@ -212,6 +218,41 @@ void check_sum_to_one(MapReader& r, const std::string& k, const std::vector<doub
   double sum = 0.0;
   for (double x : f) sum += x;
   if (std::abs(sum - 1.0) > 1e-6) r.fail(r.key(k), fmt::format("must sum to 1 (got {})", sum));
+}
+
+// particles.N.species of a random group: one name, or a list of names with their number
+// fractions in particles.N.fractions (optional for one name).
+void read_mixture(MapReader& r, const Scene& sc, ParticleGroupSpec& g) {
+  const YAML::Node n = r.child("species");
+  if (!n) r.fail(r.key("species"), "is required: a species name or a list of names");
+  if (n.IsScalar()) {
+    g.mixture = {n.Scalar()};
+  } else if (n.IsSequence() && n.size() > 0) {
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      if (!n[i].IsScalar()) r.fail(fmt::format("{}.{}", r.key("species"), i), "must be a species name");
+      g.mixture.push_back(n[i].Scalar());
+    }
+  } else {
+    r.fail(r.key("species"), "must be a species name or a non-empty list of names");
+  }
+  for (std::size_t i = 0; i < g.mixture.size(); ++i) {
+    const std::string k = n.IsScalar() ? r.key("species") : fmt::format("{}.{}", r.key("species"), i);
+    if (sc.species_index(g.mixture[i]) < 0)
+      r.fail(k, fmt::format("'{}' is not a species listed under 'species'", g.mixture[i]));
+    for (std::size_t j = 0; j < i; ++j)
+      if (g.mixture[j] == g.mixture[i]) r.fail(k, fmt::format("'{}' is listed twice", g.mixture[i]));
+  }
+  g.species = g.mixture.front();
+  if (g.mixture.size() > 1 && !r.has("fractions"))
+    r.fail(r.key("fractions"), "is required with a list of species: one number fraction per species, summing to 1");
+  if (r.has("fractions")) {
+    g.fractions = r.numbers("fractions", 0.0, 1.0, true);
+    if (g.fractions.size() != g.mixture.size())
+      r.fail(r.key("fractions"), fmt::format("must have one entry per species ({} species, {} fractions)",
+                                             g.mixture.size(), g.fractions.size()));
+    check_sum_to_one(r, "fractions", g.fractions);
+  }
+  if (g.mixture.size() == 1) g.fractions = {1.0};  // what case.yaml implies when it writes one name
 }
 
 // species.N.size_distribution: one of the laws of size_distribution.hpp. Only the keys
@@ -352,15 +393,21 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     for (std::size_t gi = 0; list && gi < list.size(); ++gi) {
       MapReader r(list[gi], fmt::format("particles.{}", gi), file);
       ParticleGroupSpec g;
-      const std::string type = r.choice("type", "single", {"single", "lattice"});
-      g.kind = type == "single" ? ParticleGroupSpec::Kind::kSingle : ParticleGroupSpec::Kind::kLattice;
-      g.species = r.text("species", "");
-      const int s = sc.species_index(g.species);
-      if (s < 0) r.fail(r.key("species"), fmt::format("'{}' is not a species listed under 'species'", g.species));
-      if (!sc.species[s].monodisperse())
-        r.fail(r.key("species"), fmt::format("species '{}' has a size_distribution; a {} group needs a species "
-                                             "with one diameter", g.species, type));
-      const double radius = 0.5 * sc.species[s].diameter;
+      const std::string type = r.choice("type", "single", {"single", "lattice", "random"});
+      g.kind = type == "single"    ? ParticleGroupSpec::Kind::kSingle
+               : type == "lattice" ? ParticleGroupSpec::Kind::kLattice
+                                   : ParticleGroupSpec::Kind::kRandom;
+      if (g.kind == ParticleGroupSpec::Kind::kRandom) {
+        read_mixture(r, sc, g);
+      } else {
+        g.species = r.text("species", "");
+        const int s = sc.species_index(g.species);
+        if (s < 0) r.fail(r.key("species"), fmt::format("'{}' is not a species listed under 'species'", g.species));
+        if (!sc.species[s].monodisperse())
+          r.fail(r.key("species"), fmt::format("species '{}' has a size_distribution; a {} group needs a species "
+                                               "with one diameter (type random takes a size law)", g.species, type));
+      }
+      const double radius = 0.5 * sc.species[sc.species_index(g.species)].diameter;
       g.velocity = r.vec3("velocity", {0, 0, 0});
       g.rigid = r.boolean("rigid", false);
       if (g.kind == ParticleGroupSpec::Kind::kSingle) {
@@ -377,7 +424,14 @@ Scene parse(const YAML::Node& root, const std::string& file) {
           if (g.hi[d] > sc.box.hi[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max > domain.size)");
           if (g.hi[d] <= g.lo[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max <= min)");
         }
-        g.voidage = r.number("voidage", g.voidage, 1.0 - M_PI / 6.0, 1.0, false, true);
+        if (g.kind == ParticleGroupSpec::Kind::kLattice) {
+          g.voidage = r.number("voidage", g.voidage, 1.0 - M_PI / 6.0, 1.0, false, true);
+        } else {
+          // 1 - 0.64: no random packing is denser than random close packing. Random
+          // sequential addition stops far earlier (random_packing.hpp) and says so.
+          g.voidage = r.number("voidage", g.voidage, 0.36, 1.0, false, true);
+          g.seed = r.whole64("seed", 0, 0, std::numeric_limits<std::int64_t>::max());
+        }
       }
       r.finish();
       sc.particles.push_back(g);
@@ -473,10 +527,11 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
   if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = sc.fluid.spacing;
-  if (sc.insitu.reference_velocity == 0.0) {  // auto: hindered settling of the first lattice group
+  if (sc.insitu.reference_velocity == 0.0) {  // auto: hindered settling of the first block or suspension
     sc.insitu.reference_velocity = -1.0;
     for (const auto& grp : sc.particles) {
-      if (grp.kind != ParticleGroupSpec::Kind::kLattice) continue;
+      if (grp.kind == ParticleGroupSpec::Kind::kSingle) continue;
+      // The group's (first) species; for a size law, diameter is its Sauter mean d32.
       const SpeciesSpec& sp = sc.species[sc.species_index(grp.species)];
       sc.insitu.reference_velocity = di_felice_hindered_settling(sp.diameter, sp.density, sc.fluid.density,
                                                                  sc.fluid.viscosity, g, grp.voidage);
@@ -566,8 +621,14 @@ std::string scene_to_yaml(const Scene& sc) {
   for (const auto& g : sc.particles) {
     e << YAML::BeginMap;
     const bool single = g.kind == ParticleGroupSpec::Kind::kSingle;
-    e << YAML::Key << "type" << YAML::Value << (single ? "single" : "lattice");
-    e << YAML::Key << "species" << YAML::Value << g.species;
+    const bool random = g.kind == ParticleGroupSpec::Kind::kRandom;
+    e << YAML::Key << "type" << YAML::Value << (single ? "single" : random ? "random" : "lattice");
+    if (random && g.mixture.size() > 1) {
+      e << YAML::Key << "species" << YAML::Value << YAML::Flow << g.mixture;
+      e << YAML::Key << "fractions" << YAML::Value << YAML::Flow << g.fractions;
+    } else {
+      e << YAML::Key << "species" << YAML::Value << g.species;
+    }
     if (single) {
       e << YAML::Key << "position" << YAML::Value;
       vec(g.position);
@@ -577,6 +638,7 @@ std::string scene_to_yaml(const Scene& sc) {
       e << YAML::Key << "max" << YAML::Value;
       vec(g.hi);
       e << YAML::Key << "voidage" << YAML::Value << g.voidage;
+      if (random) e << YAML::Key << "seed" << YAML::Value << g.seed;
     }
     e << YAML::Key << "velocity" << YAML::Value;
     vec(g.velocity);
