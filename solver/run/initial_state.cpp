@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "run/random_packing.hpp"
+
 namespace sphdem {
 
 BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g, double d) {
@@ -53,10 +55,9 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
     const ParticleGroupSpec& g = sc.particles[gi];
     const int sp = sc.species_index(g.species);
     const SpeciesSpec& spec = sc.species[sp];
-    const double r = 0.5 * spec.diameter;
-    const double m = spec.density * M_PI * spec.diameter * spec.diameter * spec.diameter / 6.0;
     const int rigid = g.rigid ? group_id++ : -1;
-    auto add = [&](double x, double y, double z) {
+    // A sphere of species k and radius r: mass m = rho_p pi d^3 / 6 (2.35).
+    auto add = [&](double x, double y, double z, int k, double r) {
       const std::size_t i = s.size();
       s.resize(i + 1);
       s.x[i] = x;
@@ -66,13 +67,20 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
       s.vy[i] = g.velocity[1];
       s.vz[i] = g.velocity[2];
       s.radius[i] = r;
-      s.mass[i] = m;
-      s.species[i] = static_cast<std::uint16_t>(sp);
+      const double d = 2.0 * r;
+      s.mass[i] = sc.species[k].density * M_PI * d * d * d / 6.0;
+      s.species[i] = static_cast<std::uint16_t>(k);
       s.rigid_group[i] = rigid;
       s.id[i] = static_cast<std::int64_t>(i);
     };
+    const double r = 0.5 * spec.diameter;
     if (g.kind == ParticleGroupSpec::Kind::kSingle) {
-      add(g.position[0], g.position[1], g.position[2]);
+      add(g.position[0], g.position[1], g.position[2], sp, r);
+      continue;
+    }
+    if (g.kind == ParticleGroupSpec::Kind::kRandom) {
+      const RandomPacking P = random_packing(sc, gi, s);
+      for (std::size_t j = 0; j < P.x.size(); ++j) add(P.x[j], P.y[j], P.z[j], P.species[j], P.radius[j]);
       continue;
     }
     const BlockLattice L = block_lattice(sc, g, spec.diameter);
@@ -90,7 +98,7 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
     for (int iz = 0; iz < L.count[2]; ++iz)
       for (int iy = 0; iy < L.count[1]; ++iy)
         for (int ix = 0; ix < L.count[0]; ++ix)
-          add(L.origin[0] + ix * L.spacing[0], L.origin[1] + iy * L.spacing[1], L.origin[2] + iz * L.spacing[2]);
+          add(L.origin[0] + ix * L.spacing[0], L.origin[1] + iy * L.spacing[1], L.origin[2] + iz * L.spacing[2], sp, r);
   }
   s.n_owned = s.size();
 }

@@ -130,10 +130,26 @@ std::string describe_scene(const Scene& sc) {
   const auto& sp = sim.spheres();
   std::vector<std::size_t> count(sc.species.size(), 0);
   for (std::size_t j = 0; j < sp.n_owned; ++j) ++count[sp.species[j]];
-  for (std::size_t k = 0; k < sc.species.size(); ++k)
-    s += fmt::format("species {:<8} {} spheres, d = {} m, rho = {} kg/m^3, h/d = dx/d = {:.3g}\n",
-                     sc.species[k].name, count[k], sc.species[k].diameter, sc.species[k].density,
-                     sc.fluid.spacing / sc.species[k].diameter);
+  for (std::size_t k = 0; k < sc.species.size(); ++k) {
+    const SpeciesSpec& spec = sc.species[k];
+    if (spec.monodisperse()) {
+      s += fmt::format("species {:<8} {} spheres, d = {} m, rho = {} kg/m^3, h/d = dx/d = {:.3g}\n", spec.name,
+                       count[k], spec.diameter, spec.density, sc.fluid.spacing / spec.diameter);
+      continue;
+    }
+    double dmin = spec.d_max(), dmax = spec.d_min(), sum = 0.0;  // of the spheres placed
+    for (std::size_t j = 0; j < sp.n_owned; ++j)
+      if (sp.species[j] == k) {
+        dmin = std::min(dmin, 2.0 * sp.radius[j]);
+        dmax = std::max(dmax, 2.0 * sp.radius[j]);
+        sum += 2.0 * sp.radius[j];
+      }
+    s += fmt::format("species {:<8} {} spheres, {} law on [{}, {}] m (d32 = {:.4g} m; placed: mean {:.4g} m, "
+                     "{:.4g} .. {:.4g} m), rho = {} kg/m^3, h/d = dx/d = {:.3g} .. {:.3g}\n",
+                     spec.name, count[k], size_law_name(spec.size.law), spec.d_min(), spec.d_max(), spec.diameter,
+                     count[k] ? sum / count[k] : 0.0, dmin, dmax, spec.density, sc.fluid.spacing / spec.d_max(),
+                     sc.fluid.spacing / spec.d_min());
+  }
   s += fmt::format("fluid            rho_f = {} kg/m^3, mu = {} Pa s, c0 = {:.4g} m/s, B = {:.4g} Pa, u_m = {:.4g} m/s\n",
                    sc.fluid.density, sc.fluid.viscosity, sc.fluid.sound_speed, sim.eos().B, sc.fluid.expected_speed);
   s += fmt::format("drag law         {}\n", drag::drag_law_name(sc.drag));

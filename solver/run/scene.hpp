@@ -10,6 +10,7 @@
 #include "coupling/drag_laws.hpp"
 #include "dem/contact_model.hpp"
 #include "domain/box.hpp"
+#include "run/size_distribution.hpp"
 
 namespace sphdem {
 
@@ -29,17 +30,28 @@ struct FluidSpec {
 
 struct SpeciesSpec {
   std::string name;
-  double diameter = 0.0;  // (m)
+  // (m) A single-size species: the diameter of every sphere. With a size law: the Sauter
+  // mean d32 of the law, a representative value only (the Kynch line, `check`); each
+  // sphere carries its own radius in DemParticles.
+  double diameter = 0.0;
   double density = 0.0;   // (kg/m^3)
+  SizeDistribution size;  // law kSingle: every sphere has `diameter`
+
+  bool monodisperse() const { return size.law == SizeLaw::kSingle; }
+  double d_min() const { return monodisperse() ? diameter : size.min; }
+  double d_max() const { return monodisperse() ? diameter : size.max; }
 };
 
 struct ParticleGroupSpec {
-  enum class Kind { kSingle, kLattice };
+  enum class Kind { kSingle, kLattice, kRandom };
   Kind kind = Kind::kSingle;
-  std::string species;
+  std::string species;                      // the species (random: the first of `mixture`)
   std::array<double, 3> position{0, 0, 0};  // single: centre
-  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};  // lattice: region
-  double voidage = 0.9;                     // lattice: target voidage of the block
+  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};  // lattice, random: region
+  double voidage = 0.9;                     // lattice, random: target voidage of the region
+  std::vector<std::string> mixture;         // random: species names (one or more)
+  std::vector<double> fractions;            // random: number fractions of `mixture` (sum 1)
+  std::int64_t seed = 0;                    // random: seed of the positions and diameters
   std::array<double, 3> velocity{0, 0, 0};
   bool rigid = false;  // constant-porosity block: moves rigidly (thesis §4.5)
 };
@@ -73,7 +85,7 @@ struct InSituSpec {
   std::vector<std::string> pipelines{"voidage_height", "interfaces", "com_tracks", "snapshots"};
   int snapshot_every = 5;            // analyses between PNG snapshots
   double grid_spacing = 0.0;         // voidage grid spacing (m); 0 = fluid.spacing
-  double reference_velocity = -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the lattice
+  double reference_velocity = -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the first block or suspension
   bool enabled = true;
 };
 

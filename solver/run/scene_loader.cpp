@@ -68,11 +68,39 @@ class MapReader {
                 bool hi_open = false) {
     double v = def;
     if (has(k)) v = scalar<double>(k, "a number");
-    if (!std::isfinite(v)) fail(key(k), fmt::format("must be a finite number (got {})", v));
+    check_range(key(k), v, lo, hi, lo_open, hi_open);
+    return v;
+  }
+  void check_range(const std::string& full_key, double v, double lo, double hi, bool lo_open = false,
+                   bool hi_open = false) const {
+    if (!std::isfinite(v)) fail(full_key, fmt::format("must be a finite number (got {})", v));
     const bool bad = (lo_open ? v <= lo : v < lo) || (hi_open ? v >= hi : v > hi);
     if (bad)
-      fail(key(k), fmt::format("must be in {}{}, {}{} (got {})", lo_open ? "(" : "[", lo,
-                               hi, hi_open ? ")" : "]", v));
+      fail(full_key, fmt::format("must be in {}{}, {}{} (got {})", lo_open ? "(" : "[", lo,
+                                 hi, hi_open ? ")" : "]", v));
+  }
+  // A non-empty list of numbers, each in [lo, hi] (open ends as for number()); an entry
+  // in error is named by its index, 'key.i'.
+  std::vector<double> numbers(const std::string& k, double lo, double hi, bool lo_open = false) {
+    const YAML::Node n = child(k);
+    if (!n || !n.IsSequence() || n.size() == 0) fail(key(k), "must be a non-empty list of numbers");
+    std::vector<double> v(n.size());
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      const std::string ki = fmt::format("{}.{}", key(k), i);
+      if (!n[i].IsScalar()) fail(ki, "must be a number");
+      try {
+        v[i] = n[i].as<double>();
+      } catch (const YAML::Exception&) {
+        fail(ki, fmt::format("must be a number (got '{}')", n[i].Scalar()));
+      }
+      check_range(ki, v[i], lo, hi, lo_open);
+    }
+    return v;
+  }
+  std::int64_t whole64(const std::string& k, std::int64_t def, std::int64_t lo, std::int64_t hi) {
+    std::int64_t v = def;
+    if (has(k)) v = scalar<std::int64_t>(k, "a whole number");
+    if (v < lo || v > hi) fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
     return v;
   }
   // A number the file must give (no default).
@@ -180,8 +208,105 @@ void apply_override(YAML::Node root, const std::string& assignment, const std::s
   }
 }
 
+// The largest Stokes speed of a species: that of its largest sphere.
 double stokes_speed(const SpeciesSpec& s, const FluidSpec& f, double g) {
-  return std::abs(s.density - f.density) * g * s.diameter * s.diameter / (18.0 * f.viscosity);
+  return std::abs(s.density - f.density) * g * s.d_max() * s.d_max() / (18.0 * f.viscosity);
+}
+
+// Fractions that must sum to 1 (number fractions of a mixture, list-law fractions).
+void check_sum_to_one(MapReader& r, const std::string& k, const std::vector<double>& f) {
+  double sum = 0.0;
+  for (double x : f) sum += x;
+  if (std::abs(sum - 1.0) > 1e-6) r.fail(r.key(k), fmt::format("must sum to 1 (got {})", sum));
+}
+
+// particles.N.species of a random group: one name, or a list of names with their number
+// fractions in particles.N.fractions (optional for one name).
+void read_mixture(MapReader& r, const Scene& sc, ParticleGroupSpec& g) {
+  const YAML::Node n = r.child("species");
+  if (!n) r.fail(r.key("species"), "is required: a species name or a list of names");
+  if (n.IsScalar()) {
+    g.mixture = {n.Scalar()};
+  } else if (n.IsSequence() && n.size() > 0) {
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      if (!n[i].IsScalar()) r.fail(fmt::format("{}.{}", r.key("species"), i), "must be a species name");
+      g.mixture.push_back(n[i].Scalar());
+    }
+  } else {
+    r.fail(r.key("species"), "must be a species name or a non-empty list of names");
+  }
+  for (std::size_t i = 0; i < g.mixture.size(); ++i) {
+    const std::string k = n.IsScalar() ? r.key("species") : fmt::format("{}.{}", r.key("species"), i);
+    if (sc.species_index(g.mixture[i]) < 0)
+      r.fail(k, fmt::format("'{}' is not a species listed under 'species'", g.mixture[i]));
+    for (std::size_t j = 0; j < i; ++j)
+      if (g.mixture[j] == g.mixture[i]) r.fail(k, fmt::format("'{}' is listed twice", g.mixture[i]));
+  }
+  g.species = g.mixture.front();
+  if (g.mixture.size() > 1 && !r.has("fractions"))
+    r.fail(r.key("fractions"), "is required with a list of species: one number fraction per species, summing to 1");
+  if (r.has("fractions")) {
+    g.fractions = r.numbers("fractions", 0.0, 1.0, true);
+    if (g.fractions.size() != g.mixture.size())
+      r.fail(r.key("fractions"), fmt::format("must have one entry per species ({} species, {} fractions)",
+                                             g.mixture.size(), g.fractions.size()));
+    check_sum_to_one(r, "fractions", g.fractions);
+  }
+  if (g.mixture.size() == 1) g.fractions = {1.0};  // what case.yaml implies when it writes one name
+}
+
+// species.N.size_distribution: one of the laws of size_distribution.hpp. Only the keys
+// of the chosen law are allowed.
+SizeDistribution read_size_distribution(const YAML::Node& node, const std::string& path, const std::string& file) {
+  MapReader r(node, path, file);
+  SizeDistribution L;
+  if (!r.has("law")) r.fail(r.key("law"), "is required: one of list, uniform, normal, lognormal");
+  const std::string law = r.choice("law", "", {"list", "uniform", "normal", "lognormal"});
+  auto bounds = [&] {
+    L.min = r.required("min", 0.0, kInf, true);
+    L.max = r.required("max", 0.0, kInf, true);
+    if (L.max <= L.min) r.fail(r.key("max"), fmt::format("must be > min = {} (got {})", L.min, L.max));
+  };
+  if (law == "list") {
+    L.law = SizeLaw::kList;
+    L.diameters = r.numbers("diameters", 0.0, kInf, true);
+    if (!r.has("fractions")) r.fail(r.key("fractions"), "is required: one fraction per diameter, summing to 1");
+    L.fractions = r.numbers("fractions", 0.0, 1.0, true);
+    if (L.fractions.size() != L.diameters.size())
+      r.fail(r.key("fractions"), fmt::format("must have one entry per diameter ({} diameters, {} fractions)",
+                                             L.diameters.size(), L.fractions.size()));
+    check_sum_to_one(r, "fractions", L.fractions);
+    std::vector<double> sorted = L.diameters;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 1; i < sorted.size(); ++i)
+      if (sorted[i] == sorted[i - 1])
+        r.fail(r.key("diameters"), fmt::format("each diameter may appear once ({} is given twice)", sorted[i]));
+    if (!r.has("basis")) r.fail(r.key("basis"), "is required: number or volume (what the fractions count)");
+    L.by_volume = r.choice("basis", "", {"number", "volume"}) == "volume";
+    L.min = sorted.front();
+    L.max = sorted.back();
+  } else if (law == "uniform") {
+    L.law = SizeLaw::kUniform;
+    bounds();
+  } else {
+    const bool normal = law == "normal";
+    L.law = normal ? SizeLaw::kNormal : SizeLaw::kLognormal;
+    if (normal) {
+      L.mean = r.required("mean", 0.0, kInf, true);
+      L.std = r.required("std", 0.0, kInf, true);
+    } else {
+      L.median = r.required("median", 0.0, kInf, true);
+      L.sigma_ln = r.required("sigma_ln", 0.0, kInf, true);
+    }
+    bounds();
+    const double kept = truncation_mass(L);
+    if (!(kept >= 1e-3))
+      r.fail(r.key("min"), fmt::format("the truncation [min, max] = [{}, {}] keeps only {:.3g} % of the {} law; "
+                                       "it must keep at least 0.1 % (check {}, min and max)",
+                                       L.min, L.max, 100.0 * kept, law, normal ? "mean, std" : "median, sigma_ln"));
+  }
+  r.finish();
+  return L;
 }
 
 Scene parse(const YAML::Node& root, const std::string& file) {
@@ -246,7 +371,17 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       if (sp.name.empty() || sp.name.find_first_of(":, ") != std::string::npos)
         r.fail(r.key("name"), "must be a non-empty name without ':', ',' or spaces");
       if (sc.species_index(sp.name) >= 0) r.fail(r.key("name"), "duplicate species name '" + sp.name + "'");
-      sp.diameter = r.required("diameter", 0.0, kInf, true);
+      const bool one_size = r.has("diameter"), law = r.has("size_distribution");
+      if (one_size && law)
+        r.fail(r.key("size_distribution"), "give either 'diameter' (one size) or 'size_distribution', not both");
+      if (law) {
+        sp.size = read_size_distribution(r.child("size_distribution"), r.key("size_distribution"), file);
+        sp.diameter = sauter_mean(sp.size);
+      } else {
+        if (!one_size) r.fail(r.key("diameter"), "is required: a number in (0, inf], or give 'size_distribution'");
+        sp.diameter = r.required("diameter", 0.0, kInf, true);
+        sp.size.min = sp.size.max = sp.diameter;
+      }
       sp.density = r.required("density", 0.0, kInf, true);
       r.finish();
       sc.species.push_back(sp);
@@ -259,12 +394,21 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     for (std::size_t gi = 0; list && gi < list.size(); ++gi) {
       MapReader r(list[gi], fmt::format("particles.{}", gi), file);
       ParticleGroupSpec g;
-      const std::string type = r.choice("type", "single", {"single", "lattice"});
-      g.kind = type == "single" ? ParticleGroupSpec::Kind::kSingle : ParticleGroupSpec::Kind::kLattice;
-      g.species = r.text("species", "");
-      const int s = sc.species_index(g.species);
-      if (s < 0) r.fail(r.key("species"), fmt::format("'{}' is not a species listed under 'species'", g.species));
-      const double radius = 0.5 * sc.species[s].diameter;
+      const std::string type = r.choice("type", "single", {"single", "lattice", "random"});
+      g.kind = type == "single"    ? ParticleGroupSpec::Kind::kSingle
+               : type == "lattice" ? ParticleGroupSpec::Kind::kLattice
+                                   : ParticleGroupSpec::Kind::kRandom;
+      if (g.kind == ParticleGroupSpec::Kind::kRandom) {
+        read_mixture(r, sc, g);
+      } else {
+        g.species = r.text("species", "");
+        const int s = sc.species_index(g.species);
+        if (s < 0) r.fail(r.key("species"), fmt::format("'{}' is not a species listed under 'species'", g.species));
+        if (!sc.species[s].monodisperse())
+          r.fail(r.key("species"), fmt::format("species '{}' has a size_distribution; a {} group needs a species "
+                                               "with one diameter (type random takes a size law)", g.species, type));
+      }
+      const double radius = 0.5 * sc.species[sc.species_index(g.species)].diameter;
       g.velocity = r.vec3("velocity", {0, 0, 0});
       g.rigid = r.boolean("rigid", false);
       if (g.kind == ParticleGroupSpec::Kind::kSingle) {
@@ -281,7 +425,14 @@ Scene parse(const YAML::Node& root, const std::string& file) {
           if (g.hi[d] > sc.box.hi[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max > domain.size)");
           if (g.hi[d] <= g.lo[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max <= min)");
         }
-        g.voidage = r.number("voidage", g.voidage, 1.0 - M_PI / 6.0, 1.0, false, true);
+        if (g.kind == ParticleGroupSpec::Kind::kLattice) {
+          g.voidage = r.number("voidage", g.voidage, 1.0 - M_PI / 6.0, 1.0, false, true);
+        } else {
+          // 1 - 0.64: no random packing is denser than random close packing. Random
+          // sequential addition stops far earlier (random_packing.hpp) and says so.
+          g.voidage = r.number("voidage", g.voidage, 0.36, 1.0, false, true);
+          g.seed = r.whole64("seed", 0, 0, std::numeric_limits<std::int64_t>::max());
+        }
       }
       r.finish();
       sc.particles.push_back(g);
@@ -377,10 +528,11 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
   if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = sc.fluid.spacing;
-  if (sc.insitu.reference_velocity == 0.0) {  // auto: hindered settling of the first lattice group
+  if (sc.insitu.reference_velocity == 0.0) {  // auto: hindered settling of the first block or suspension
     sc.insitu.reference_velocity = -1.0;
     for (const auto& grp : sc.particles) {
-      if (grp.kind != ParticleGroupSpec::Kind::kLattice) continue;
+      if (grp.kind == ParticleGroupSpec::Kind::kSingle) continue;
+      // The group's (first) species; for a size law, diameter is its Sauter mean d32.
       const SpeciesSpec& sp = sc.species[sc.species_index(grp.species)];
       sc.insitu.reference_velocity = di_felice_hindered_settling(sp.diameter, sp.density, sc.fluid.density,
                                                                  sc.fluid.viscosity, g, grp.voidage);
@@ -437,16 +589,48 @@ std::string scene_to_yaml(const Scene& sc) {
   e << YAML::Key << "enabled" << YAML::Value << f.enabled;
   e << YAML::EndMap;
   e << YAML::Key << "species" << YAML::Value << YAML::BeginSeq;
-  for (const auto& s : sc.species)
-    e << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "diameter"
-      << YAML::Value << s.diameter << YAML::Key << "density" << YAML::Value << s.density << YAML::EndMap;
+  for (const auto& s : sc.species) {
+    e << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << s.name;
+    if (s.monodisperse()) {
+      e << YAML::Key << "diameter" << YAML::Value << s.diameter;
+    } else {
+      const SizeDistribution& L = s.size;
+      e << YAML::Key << "size_distribution" << YAML::Value << YAML::BeginMap << YAML::Key << "law" << YAML::Value
+        << size_law_name(L.law);
+      switch (L.law) {
+        case SizeLaw::kList:
+          e << YAML::Key << "diameters" << YAML::Value << YAML::Flow << L.diameters << YAML::Key << "fractions"
+            << YAML::Value << YAML::Flow << L.fractions << YAML::Key << "basis" << YAML::Value
+            << (L.by_volume ? "volume" : "number");
+          break;
+        case SizeLaw::kNormal:
+          e << YAML::Key << "mean" << YAML::Value << L.mean << YAML::Key << "std" << YAML::Value << L.std;
+          break;
+        case SizeLaw::kLognormal:
+          e << YAML::Key << "median" << YAML::Value << L.median << YAML::Key << "sigma_ln" << YAML::Value
+            << L.sigma_ln;
+          break;
+        default: break;
+      }
+      if (L.law != SizeLaw::kList)
+        e << YAML::Key << "min" << YAML::Value << L.min << YAML::Key << "max" << YAML::Value << L.max;
+      e << YAML::EndMap;
+    }
+    e << YAML::Key << "density" << YAML::Value << s.density << YAML::EndMap;
+  }
   e << YAML::EndSeq;
   e << YAML::Key << "particles" << YAML::Value << YAML::BeginSeq;
   for (const auto& g : sc.particles) {
     e << YAML::BeginMap;
     const bool single = g.kind == ParticleGroupSpec::Kind::kSingle;
-    e << YAML::Key << "type" << YAML::Value << (single ? "single" : "lattice");
-    e << YAML::Key << "species" << YAML::Value << g.species;
+    const bool random = g.kind == ParticleGroupSpec::Kind::kRandom;
+    e << YAML::Key << "type" << YAML::Value << (single ? "single" : random ? "random" : "lattice");
+    if (random && g.mixture.size() > 1) {
+      e << YAML::Key << "species" << YAML::Value << YAML::Flow << g.mixture;
+      e << YAML::Key << "fractions" << YAML::Value << YAML::Flow << g.fractions;
+    } else {
+      e << YAML::Key << "species" << YAML::Value << g.species;
+    }
     if (single) {
       e << YAML::Key << "position" << YAML::Value;
       vec(g.position);
@@ -456,6 +640,7 @@ std::string scene_to_yaml(const Scene& sc) {
       e << YAML::Key << "max" << YAML::Value;
       vec(g.hi);
       e << YAML::Key << "voidage" << YAML::Value << g.voidage;
+      if (random) e << YAML::Key << "seed" << YAML::Value << g.seed;
     }
     e << YAML::Key << "velocity" << YAML::Value;
     vec(g.velocity);

@@ -55,14 +55,16 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
 
   // DEM time step: dt_DEM <= t_c / 20 over every pair of species and the wall (3.7),
   // and well below the Stokes relaxation time m/(3 pi mu d) of the lightest sphere.
+  // A species with a size law counts with its smallest sphere (shortest t_c, 2.44).
   const LinearSpringDashpot& law = scene_.contact.normal;
   t_contact_ = std::numeric_limits<double>::infinity();
   double t_drag = std::numeric_limits<double>::infinity();
   std::vector<double> masses;
   for (const auto& sp : scene_.species) {
-    const double m = sp.density * M_PI * std::pow(sp.diameter, 3) / 6.0;
+    const double d = sp.d_min();
+    const double m = sp.density * M_PI * std::pow(d, 3) / 6.0;
     masses.push_back(m);
-    t_drag = std::min(t_drag, m / (3.0 * M_PI * fs.viscosity * sp.diameter));
+    t_drag = std::min(t_drag, m / (3.0 * M_PI * fs.viscosity * d));
   }
   for (std::size_t a = 0; a < masses.size(); ++a) {
     auto consider = [&](double m12) {

@@ -51,6 +51,14 @@ fluid:
 species:
   - {name: glass, diameter: 1.0e-4, density: 2500}
   - {name: light, diameter: 1.2e-4, density: 1500}
+  - name: sand
+    density: 2650
+    size_distribution: {law: lognormal, median: 1.1e-4, sigma_ln: 0.2, min: 7.0e-5, max: 1.9e-4}
+  - name: sieved
+    density: 2600
+    size_distribution: {law: list, diameters: [9.0e-5, 1.3e-4], fractions: [0.35, 0.65], basis: volume}
+  - {name: flat, density: 2400, size_distribution: {law: uniform, min: 8.0e-5, max: 1.1e-4}}
+  - {name: bell, density: 2300, size_distribution: {law: normal, mean: 1.0e-4, std: 1.3e-5, min: 7.0e-5, max: 1.3e-4}}
 particles:
   - type: lattice
     species: glass
@@ -60,6 +68,14 @@ particles:
     velocity: [0, 0, -0.001]
     rigid: true
   - {type: single, species: light, position: [0.001, 0.003, 0.006], velocity: [0.01, 0, 0]}
+  - type: random
+    species: [sand, sieved, glass]
+    fractions: [0.25, 0.35, 0.4]
+    min: [0.0, 0.0, 0.0045]
+    max: [0.004, 0.004, 0.0055]
+    voidage: 0.91
+    seed: 8589934597
+  - {type: random, species: flat, min: [0.001, 0.001, 0.0001], max: [0.003, 0.003, 0.0011], voidage: 0.95}
 contact:
   model: linear_spring_dashpot
   stiffness: 1.0e4
@@ -166,6 +182,17 @@ void expect_same_scene(const Scene& a, const Scene& b, double rel) {
     EXPECT_EQ(a.species[s].name, b.species[s].name);
     same(a.species[s].diameter, b.species[s].diameter, "species.diameter");
     same(a.species[s].density, b.species[s].density, "species.density");
+    const SizeDistribution &p = a.species[s].size, &q = b.species[s].size;
+    EXPECT_EQ(p.law, q.law);
+    EXPECT_EQ(p.diameters, q.diameters);
+    EXPECT_EQ(p.fractions, q.fractions);
+    EXPECT_EQ(p.by_volume, q.by_volume);
+    same(p.mean, q.mean, "size_distribution.mean");
+    same(p.std, q.std, "size_distribution.std");
+    same(p.median, q.median, "size_distribution.median");
+    same(p.sigma_ln, q.sigma_ln, "size_distribution.sigma_ln");
+    same(p.min, q.min, "size_distribution.min");
+    same(p.max, q.max, "size_distribution.max");
   }
   ASSERT_EQ(a.particles.size(), b.particles.size());
   for (std::size_t g = 0; g < a.particles.size(); ++g) {
@@ -178,6 +205,9 @@ void expect_same_scene(const Scene& a, const Scene& b, double rel) {
     same(p.voidage, q.voidage, "particles.voidage");
     same3(p.velocity, q.velocity, "particles.velocity");
     EXPECT_EQ(p.rigid, q.rigid);
+    EXPECT_EQ(p.mixture, q.mixture);
+    EXPECT_EQ(p.fractions, q.fractions);
+    EXPECT_EQ(p.seed, q.seed);
   }
   same(a.contact.normal.k, b.contact.normal.k, "contact.stiffness");
   same(a.contact.normal.beta, b.contact.normal.beta, "contact.damping");
@@ -366,7 +396,7 @@ TEST(SceneErrors, WrongType) {
   error_of("species: {name: glass}\n", {"'species'", "list"});
   error_of(kBase + "drag: {law: newton}\n", {"'drag.law'", "one of", "stokes", "di_felice",
                                              "coulson_richardson", "brown_lawler", "newton"});
-  error_of(edit(kBase, "type: single", "type: cloud"), {"'particles.0.type'", "single, lattice"});
+  error_of(edit(kBase, "type: single", "type: cloud"), {"'particles.0.type'", "single, lattice, random"});
   error_of("a: [1,\n", {kFile, "not valid YAML"});
 }
 
@@ -507,8 +537,16 @@ TEST(SceneRoundTrip, ReloadsToTheSameScene) {
   }
   // The non-default values of kFull survived (guards against a comparison of defaults).
   const Scene b = load_scene_text(scene_to_yaml(load_scene_text(kFull, kFile)), "case.yaml");
-  EXPECT_EQ(b.particles.size(), 2u);
+  ASSERT_EQ(b.particles.size(), 4u);
   EXPECT_EQ(b.particles[0].kind, ParticleGroupSpec::Kind::kLattice);
+  EXPECT_EQ(b.particles[2].kind, ParticleGroupSpec::Kind::kRandom);
+  EXPECT_EQ(b.particles[2].mixture, (std::vector<std::string>{"sand", "sieved", "glass"}));
+  EXPECT_EQ(b.particles[2].fractions, (std::vector<double>{0.25, 0.35, 0.4}));
+  EXPECT_EQ(b.particles[2].seed, 8589934597);  // above 2^32: both halves reach the seed sequence
+  EXPECT_EQ(b.particles[3].mixture, (std::vector<std::string>{"flat"}));
+  EXPECT_EQ(b.species[2].size.law, SizeLaw::kLognormal);
+  EXPECT_EQ(b.species[3].size.law, SizeLaw::kList);
+  EXPECT_TRUE(b.species[3].size.by_volume);
   EXPECT_EQ(b.particles[0].voidage, 0.85);
   EXPECT_TRUE(b.particles[0].rigid);
   EXPECT_EQ(b.contact.normal.restitution, 0.7);
@@ -610,6 +648,175 @@ particles:
 }
 
 // ---------------------------------------------------------------------------------
+// Size laws (species.N.size_distribution) and random groups (particles.N, type random)
+
+TEST(SceneSizeLaws, LoadedAsGiven) {
+  const Scene sc = load_scene_text(kFull, kFile);
+  const SpeciesSpec& sand = sc.species[2];
+  EXPECT_EQ(sand.size.law, SizeLaw::kLognormal);
+  EXPECT_EQ(sand.size.median, 1.1e-4);
+  EXPECT_EQ(sand.size.sigma_ln, 0.2);
+  EXPECT_EQ(sand.d_min(), 7e-5);
+  EXPECT_EQ(sand.d_max(), 1.9e-4);
+  EXPECT_DOUBLE_EQ(sand.diameter, sauter_mean(sand.size));  // the representative diameter
+  const SpeciesSpec& sieved = sc.species[3];
+  EXPECT_EQ(sieved.size.law, SizeLaw::kList);
+  EXPECT_TRUE(sieved.size.by_volume);
+  EXPECT_EQ(sieved.size.diameters, (std::vector<double>{9e-5, 1.3e-4}));
+  EXPECT_EQ(sieved.size.fractions, (std::vector<double>{0.35, 0.65}));
+  EXPECT_EQ(sieved.d_min(), 9e-5);
+  EXPECT_EQ(sieved.d_max(), 1.3e-4);
+  EXPECT_EQ(sc.species[4].size.law, SizeLaw::kUniform);
+  EXPECT_EQ(sc.species[5].size.law, SizeLaw::kNormal);
+  EXPECT_EQ(sc.species[5].size.std, 1.3e-5);
+  EXPECT_TRUE(sc.species[0].monodisperse());
+  EXPECT_EQ(sc.species[0].d_min(), 1e-4);
+}
+
+TEST(SceneSizeLaws, Errors) {
+  const std::string sp = "species:\n  - {name: s, density: 2500, size_distribution: ";
+  auto law = [&](const std::string& m) { return sp + m + "}\n"; };
+  error_of("species: [{name: s, density: 2500, diameter: 1.0e-4, size_distribution: {law: uniform, min: 1, max: 2}}]\n",
+           {kFile, "'species.0.size_distribution'", "not both"});
+  error_of("species: [{name: s, density: 2500}]\n", {"'species.0.diameter'", "required", "size_distribution"});
+  error_of(law("{min: 1.0e-4}"), {"'species.0.size_distribution.law'", "required"});
+  error_of(law("{law: weibull}"), {"'species.0.size_distribution.law'", "list, uniform, normal, lognormal", "weibull"});
+  error_of(law("{law: uniform, min: 1.0e-4, max: 2.0e-4, mean: 1.5e-4}"),
+           {"'species.0.size_distribution.mean'", "unknown key", "allowed here"});
+  error_of(law("{law: uniform, min: 2.0e-4, max: 1.0e-4}"), {"'species.0.size_distribution.max'", "> min"});
+  error_of(law("{law: uniform, min: 0, max: 1.0e-4}"), {"'species.0.size_distribution.min'", "(0, inf]"});
+  error_of(law("{law: uniform, max: 1.0e-4}"), {"'species.0.size_distribution.min'", "required"});
+  error_of(law("{law: list, diameters: [1.0e-4, 2.0e-4], fractions: [0.5], basis: number}"),
+           {"'species.0.size_distribution.fractions'", "one entry per diameter"});
+  error_of(law("{law: list, diameters: [1.0e-4, 2.0e-4], fractions: [0.5, 0.6], basis: number}"),
+           {"'species.0.size_distribution.fractions'", "sum to 1", "1.1"});
+  error_of(law("{law: list, diameters: [1.0e-4, -2.0e-4], fractions: [0.5, 0.5], basis: number}"),
+           {"'species.0.size_distribution.diameters.1'", "(0, inf]"});
+  error_of(law("{law: list, diameters: [1.0e-4, x], fractions: [0.5, 0.5], basis: number}"),
+           {"'species.0.size_distribution.diameters.1'", "a number"});
+  error_of(law("{law: list, diameters: [1.0e-4, 1.0e-4], fractions: [0.5, 0.5], basis: number}"),
+           {"'species.0.size_distribution.diameters'", "given twice"});
+  error_of(law("{law: list, diameters: [], fractions: [], basis: number}"),
+           {"'species.0.size_distribution.diameters'", "non-empty list"});
+  error_of(law("{law: list, diameters: [1.0e-4], fractions: [1]}"),
+           {"'species.0.size_distribution.basis'", "required", "number or volume"});
+  error_of(law("{law: list, diameters: [1.0e-4], fractions: [1], basis: mass}"),
+           {"'species.0.size_distribution.basis'", "number, volume"});
+  error_of(law("{law: normal, mean: 1.0e-4, min: 5.0e-5, max: 1.5e-4}"), {"'species.0.size_distribution.std'", "required"});
+  error_of(law("{law: normal, mean: 1.0e-4, std: 1.0e-5, min: 1.5e-4, max: 1.6e-4}"),
+           {"'species.0.size_distribution.min'", "keeps only", "at least 0.1 %"});
+  error_of(law("{law: lognormal, median: 1.0e-4, sigma_ln: 0, min: 5.0e-5, max: 1.5e-4}"),
+           {"'species.0.size_distribution.sigma_ln'", "(0, inf]"});
+  error_of(law("{law: lognormal, median: 1.0e-4, sigma_ln: 0.2, min: 5.0e-5, max: 1.5e-4, std: 1}"),
+           {"'species.0.size_distribution.std'", "unknown key"});
+  error_of(sp + "5}\n", {"'species.0.size_distribution'", "map"});
+  // Lattice and single groups need one diameter.
+  const std::string psd = law("{law: uniform, min: 8.0e-5, max: 1.2e-4}");
+  error_of(psd + "particles: [{type: lattice, species: s, min: [0, 0, 0], max: [0.004, 0.004, 0.002]}]\n",
+           {"'particles.0.species'", "size_distribution", "lattice"});
+  error_of(psd + "particles: [{type: single, species: s}]\n", {"'particles.0.species'", "size_distribution"});
+}
+
+TEST(SceneSizeLaws, ExpectedSpeedFromTheLargestSphere) {
+  const std::string yaml = "species: [{name: s, density: 2500, size_distribution: {law: uniform, min: 5.0e-5, "
+                           "max: 3.0e-4}}]\n";
+  const Scene sc = load_scene_text(yaml, kFile);
+  EXPECT_DOUBLE_EQ(sc.fluid.expected_speed, 1500 * 9.81 * 3e-4 * 3e-4 / (18 * 8.9e-4));
+}
+
+TEST(SceneRandomGroup, KeysAndDefaults) {
+  const std::string yaml = R"(
+species: [{name: glass, diameter: 1.0e-4, density: 2500}, {name: light, diameter: 1.0e-4, density: 1500}]
+particles:
+  - {type: random, species: glass, min: [0, 0, 0], max: [0.004, 0.004, 0.0048]}
+  - {type: random, species: [glass, light], fractions: [0.5, 0.5], voidage: 0.8, seed: 17, rigid: true}
+)";
+  const Scene sc = load_scene_text(yaml, kFile);
+  const ParticleGroupSpec &a = sc.particles[0], &b = sc.particles[1];
+  EXPECT_EQ(a.kind, ParticleGroupSpec::Kind::kRandom);
+  EXPECT_EQ(a.species, "glass");
+  EXPECT_EQ(a.mixture, (std::vector<std::string>{"glass"}));
+  EXPECT_EQ(a.fractions, (std::vector<double>{1.0}));
+  EXPECT_EQ(a.voidage, 0.9);
+  EXPECT_EQ(a.seed, 0);
+  EXPECT_EQ(b.mixture, (std::vector<std::string>{"glass", "light"}));
+  EXPECT_EQ(b.species, "glass");
+  EXPECT_EQ(b.fractions, (std::vector<double>{0.5, 0.5}));
+  EXPECT_EQ(b.seed, 17);
+  EXPECT_EQ(b.lo, sc.box.lo);
+  EXPECT_EQ(b.hi, sc.box.hi);
+  EXPECT_TRUE(b.rigid);
+  // One name in a list, fractions optional.
+  EXPECT_EQ(load_scene_text(yaml, kFile, {"particles.1.species=[light]", "particles.1.fractions=[1]"})
+                .particles[1].mixture, (std::vector<std::string>{"light"}));
+}
+
+TEST(SceneRandomGroup, Errors) {
+  const std::string head = "species: [{name: glass, diameter: 1.0e-4, density: 2500}, "
+                           "{name: light, diameter: 1.0e-4, density: 1500}]\nparticles:\n";
+  auto group = [&](const std::string& g) { return head + "  - {type: random, " + g + "}\n"; };
+  error_of(group("voidage: 0.9"), {kFile, "'particles.0.species'", "required"});
+  error_of(group("species: sand"), {"'particles.0.species'", "'sand'", "not a species"});
+  error_of(group("species: [glass, sand], fractions: [0.5, 0.5]"), {"'particles.0.species.1'", "'sand'"});
+  error_of(group("species: [glass, glass], fractions: [0.5, 0.5]"), {"'particles.0.species.1'", "twice"});
+  error_of(group("species: []"), {"'particles.0.species'", "non-empty list"});
+  error_of(group("species: {a: 1}"), {"'particles.0.species'", "species name"});
+  error_of(group("species: [glass, light]"), {"'particles.0.fractions'", "required", "number fraction"});
+  error_of(group("species: [glass, light], fractions: [1]"), {"'particles.0.fractions'", "one entry per species"});
+  error_of(group("species: [glass, light], fractions: [0.5, 0.4]"), {"'particles.0.fractions'", "sum to 1"});
+  error_of(group("species: [glass, light], fractions: [1.5, -0.5]"), {"'particles.0.fractions.0'", "(0, 1]"});
+  error_of(group("species: glass, voidage: 0.3"), {"'particles.0.voidage'", "[0.36, 1)"});
+  error_of(group("species: glass, voidage: 1"), {"'particles.0.voidage'", "[0.36, 1)"});
+  error_of(group("species: glass, seed: -1"), {"'particles.0.seed'", "whole number", "[0, 9223372036854775807]"});
+  error_of(group("species: glass, seed: 1.5"), {"'particles.0.seed'", "whole number"});
+  error_of(group("species: glass, position: [0, 0, 0]"), {"'particles.0.position'", "unknown key"});
+  error_of(group("species: glass, min: [0, 0, 0.002], max: [0.004, 0.004, 0.001]"),
+           {"'particles.0.max'", "min < max"});
+  // seed and fractions belong to random groups only.
+  error_of(head + "  - {type: lattice, species: glass, seed: 1}\n", {"'particles.0.seed'", "unknown key"});
+  error_of(head + "  - {type: lattice, species: glass, fractions: [1]}\n", {"'particles.0.fractions'", "unknown"});
+  error_of(head + "  - {type: lattice, species: [glass]}\n", {"'particles.0.species'", "a string"});
+}
+
+TEST(SceneRandomGroup, KynchLineFromTheSuspension) {
+  // reference_velocity 0: Di Felice hindered settling at the random group's voidage.
+  const std::string yaml = R"(
+species: [{name: glass, diameter: 1.0e-4, density: 2500}]
+particles: [{type: random, species: glass, min: [0, 0, 0], max: [0.004, 0.004, 0.0048], voidage: 0.9}]
+insitu: {reference_velocity: 0}
+)";
+  const Scene sc = load_scene_text(yaml, kFile);
+  EXPECT_NEAR(sc.insitu.reference_velocity, 4.912e-3, 0.001e-3);  // eq. 4.4 at eps = 0.9 (physics.md §5)
+}
+
+TEST(SceneRandomGroup, PlacedThroughPlaceParticlesWithPerSphereMass) {
+  const std::string yaml = R"(
+domain: {size: [0.004, 0.004, 0.003]}
+species:
+  - {name: sand, density: 2650, size_distribution: {law: list, diameters: [8.0e-5, 1.2e-4], fractions: [0.5, 0.5], basis: number}}
+particles: [{type: random, species: sand, min: [0, 0, 0], max: [0.004, 0.004, 0.002], voidage: 0.9, seed: 3}]
+)";
+  const Scene sc = load_scene_text(yaml, kFile);
+  FluidParticles f;
+  DemParticles s;
+  place_particles(sc, f, s);
+  ASSERT_GT(s.size(), 1000u);
+  EXPECT_EQ(s.n_owned, s.size());
+  double solid = 0;
+  std::size_t small = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double d = 2 * s.radius[i];
+    EXPECT_TRUE(d == 8e-5 || d == 1.2e-4) << d;
+    small += d == 8e-5;
+    EXPECT_DOUBLE_EQ(s.mass[i], 2650 * M_PI * d * d * d / 6.0);
+    EXPECT_EQ(s.id[i], static_cast<std::int64_t>(i));
+    solid += s.volume(i);
+  }
+  EXPECT_LE(std::abs(2.0 * small - static_cast<double>(s.size())), 1.0);
+  EXPECT_NEAR(1 - solid / (0.004 * 0.004 * 0.002), 0.9, 0.5 * M_PI * 1.728e-12 / 6.0 / (0.004 * 0.004 * 0.002));
+}
+
+// ---------------------------------------------------------------------------------
 // cases/README.md stays true to the loader
 
 TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
@@ -626,6 +833,16 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
       {"particles.N.", edit(kBase, "type: single,", "type: single, zz_unknown: 1,")},
       {"particles.N.", edit(kBase, "type: single, species: glass, position: [0.002, 0.002, 0.0048]",
                             "type: lattice, species: glass, zz_unknown: 1")},
+      {"particles.N.", edit(kBase, "type: single, species: glass, position: [0.002, 0.002, 0.0048]",
+                            "type: random, species: glass, zz_unknown: 1")},
+      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: list, "
+                                       "diameters: [1], fractions: [1], basis: number, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: uniform, "
+                                       "min: 1, max: 2, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: normal, "
+                                       "mean: 1, std: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: lognormal, "
+                                       "median: 1, sigma_ln: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
       {"contact.", "contact: {zz_unknown: 1}\n"},
       {"drag.", "drag: {zz_unknown: 1}\n"},
       {"coupling.", "coupling: {zz_unknown: 1}\n"},
@@ -646,6 +863,6 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
   EXPECT_GT(n, 40u);
   for (const auto& p : shipped_cases())
     EXPECT_TRUE(contains(readme, "`" + p.filename().string() + "`")) << "cases/README.md does not list " << p;
-  for (const auto& c : RunLog::columns({SpeciesSpec{"NAME", 1e-4, 2500}}))
+  for (const auto& c : RunLog::columns({SpeciesSpec{"NAME", 1e-4, 2500, {}}}))
     EXPECT_TRUE(contains(readme, "`" + c + "`")) << "cases/README.md does not list log column " << c;
 }

@@ -1,0 +1,230 @@
+#include "run/random_packing.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include "run/size_distribution.hpp"
+
+namespace sphdem {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr std::size_t kMaxSpheres = 20'000'000;
+
+double sphere_volume(double d) { return kPi * d * d * d / 6.0; }
+
+// Spheres placed so far (earlier groups first, then this group), structure of arrays,
+// threaded into a linked-cell grid: head[cell] is the last sphere put in the cell and
+// next[j] the one before it (-1 ends a list).
+class SphereGrid {
+ public:
+  // Cells of width >= min_width over the box in x and y (wrapping on periodic axes) and
+  // over [zlo, zhi] in z.
+  SphereGrid(const Box& box, double zlo, double zhi, double min_width) : box_(box) {
+    const std::array<double, 3> lo{box.lo[0], box.lo[1], zlo}, hi{box.hi[0], box.hi[1], zhi};
+    for (int a = 0; a < 3; ++a) {
+      lo_[a] = lo[a];
+      n_[a] = std::max(1, static_cast<int>(std::floor((hi[a] - lo[a]) / min_width)));
+      width_[a] = (hi[a] - lo[a]) / n_[a];
+      wrap_[a] = a < 2 && box.periodic[a];
+    }
+    head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], -1);
+  }
+
+  void insert(double x, double y, double z, double r) {
+    const std::int32_t j = static_cast<std::int32_t>(x_.size());
+    x_.push_back(x);
+    y_.push_back(y);
+    z_.push_back(z);
+    r_.push_back(r);
+    const std::size_t c = cell(axis_cell(0, x), axis_cell(1, y), axis_cell(2, z));
+    next_.push_back(head_[c]);
+    head_[c] = j;
+  }
+
+  // Does a sphere (x, y, z, r) overlap a placed one? Distances by minimum image on the
+  // box's periodic axes; touching is allowed.
+  bool overlaps(double x, double y, double z, double r) const {
+    int cx[3], cy[3], cz[3];
+    const int mx = around(0, axis_cell(0, x), cx), my = around(1, axis_cell(1, y), cy),
+              mz = around(2, axis_cell(2, z), cz);
+    const double Lx = box_.length(0), Ly = box_.length(1);
+    for (int kz = 0; kz < mz; ++kz)
+      for (int ky = 0; ky < my; ++ky)
+        for (int kx = 0; kx < mx; ++kx)
+          for (std::int32_t j = head_[cell(cx[kx], cy[ky], cz[kz])]; j >= 0; j = next_[j]) {
+            double dx = x - x_[j], dy = y - y_[j];
+            const double dz = z - z_[j];
+            if (box_.periodic[0]) dx -= Lx * std::nearbyint(dx / Lx);
+            if (box_.periodic[1]) dy -= Ly * std::nearbyint(dy / Ly);
+            const double rs = r + r_[j];
+            if (dx * dx + dy * dy + dz * dz < rs * rs) return true;
+          }
+    return false;
+  }
+
+ private:
+  int axis_cell(int a, double v) const {
+    int i = static_cast<int>(std::floor((v - lo_[a]) / width_[a]));
+    if (wrap_[a]) {
+      i %= n_[a];
+      return i < 0 ? i + n_[a] : i;
+    }
+    return std::clamp(i, 0, n_[a] - 1);
+  }
+  // The distinct cells within one of cell i along axis a.
+  int around(int a, int i, int out[3]) const {
+    int m = 0;
+    if (wrap_[a] && n_[a] < 3) {
+      for (int k = 0; k < n_[a]; ++k) out[m++] = k;
+      return m;
+    }
+    for (int d = -1; d <= 1; ++d) {
+      int j = i + d;
+      if (wrap_[a]) j = (j + n_[a]) % n_[a];
+      else if (j < 0 || j >= n_[a]) continue;
+      out[m++] = j;
+    }
+    return m;
+  }
+  std::size_t cell(int ix, int iy, int iz) const {
+    return (static_cast<std::size_t>(iz) * n_[1] + iy) * n_[0] + ix;
+  }
+
+  Box box_;
+  std::array<int, 3> n_{};
+  std::array<double, 3> lo_{}, width_{};
+  std::array<bool, 3> wrap_{};
+  std::vector<std::int32_t> head_, next_;
+  std::vector<double> x_, y_, z_, r_;
+};
+
+std::mt19937_64 stream(std::int64_t seed, std::uint32_t which) {
+  const auto s = static_cast<std::uint64_t>(seed);
+  std::seed_seq seq{static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(s >> 32), which};
+  return std::mt19937_64(seq);
+}
+
+}  // namespace
+
+RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles& existing) {
+  const ParticleGroupSpec& g = sc.particles[gi];
+  auto fail = [&](const char* key, const std::string& what) {
+    throw SceneError(fmt::format("{}: key 'particles.{}.{}': {}", sc.source, gi, key, what));
+  };
+  std::array<double, 3> span{};
+  for (int a = 0; a < 3; ++a) span[a] = g.hi[a] - g.lo[a];
+  const double v_region = span[0] * span[1] * span[2];
+  const double v_target = (1.0 - g.voidage) * v_region;
+
+  // 1. The spheres: species dealt by number fraction, diameters drawn from their laws,
+  //    kept while each brings the solid volume closer to the target.
+  std::vector<std::uint16_t> species_of;  // mixture entry -> Scene::species index
+  std::vector<SizeSampler> samplers;
+  for (const auto& name : g.mixture) {
+    const int s = sc.species_index(name);
+    species_of.push_back(static_cast<std::uint16_t>(s));
+    samplers.emplace_back(sc.species[s].size);
+  }
+  QuotaDealer dealer(g.fractions);
+  std::mt19937_64 size_rng = stream(g.seed, 1), position_rng = stream(g.seed, 2);
+  std::vector<double> diameter;
+  std::vector<std::uint16_t> species;
+  double v_solid = 0.0;
+  for (;;) {
+    const std::size_t k = dealer.next();
+    const double d = samplers[k].next(size_rng);
+    const double v = sphere_volume(d);
+    if (v_solid + 0.5 * v > v_target) break;
+    v_solid += v;
+    diameter.push_back(d);
+    species.push_back(species_of[k]);
+    if (diameter.size() > kMaxSpheres)
+      fail("voidage", fmt::format("the region would hold more than {} spheres", kMaxSpheres));
+  }
+  if (diameter.empty())
+    fail("voidage", fmt::format("the region holds less than half a sphere at voidage {}; raise its size or "
+                                "lower the voidage", g.voidage));
+
+  // 2. Largest first (the hardest to place while there is room); ties keep draw order.
+  std::vector<std::size_t> order(diameter.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return diameter[i] > diameter[j]; });
+  const double d_max = diameter[order.front()];
+
+  // 3. Where centres may go: periodic across a whole periodic width, else inside the region.
+  std::array<bool, 3> full{};
+  for (int a = 0; a < 3; ++a) {
+    full[a] = a < 2 && sc.box.periodic[a] && std::abs(span[a] - sc.box.length(a)) <= 1e-12 * sc.box.length(a);
+    if (!full[a] && span[a] < d_max)
+      fail("max", fmt::format("the region is {} m wide along {}, less than the largest diameter {} m", span[a],
+                              "xyz"[a], d_max));
+  }
+
+  // 4. The grid holds the earlier groups' spheres that reach into the region's z range.
+  double r_other = 0.0;
+  std::vector<std::size_t> others;
+  for (std::size_t j = 0; j < existing.size(); ++j)
+    if (existing.z[j] + existing.radius[j] > g.lo[2] && existing.z[j] - existing.radius[j] < g.hi[2]) {
+      others.push_back(j);
+      r_other = std::max(r_other, existing.radius[j]);
+    }
+  const double zlo = g.lo[2] - r_other, zhi = g.hi[2] + r_other;
+  const double reach = 0.5 * d_max + std::max(0.5 * d_max, r_other);  // largest contact distance
+  const double v_grid = sc.box.length(0) * sc.box.length(1) * (zhi - zlo);
+  const double n_all = static_cast<double>(diameter.size() + others.size());
+  SphereGrid grid(sc.box, zlo, zhi, std::max(reach, std::cbrt(v_grid / n_all)));  // ~1 sphere per cell
+  for (std::size_t j : others) grid.insert(existing.x[j], existing.y[j], existing.z[j], existing.radius[j]);
+
+  // 5. Random sequential addition.
+  RandomPacking out;
+  const std::size_t n = diameter.size();
+  for (auto* v : {&out.x, &out.y, &out.z, &out.radius}) v->reserve(n);
+  out.species.reserve(n);
+  double v_placed = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order[k];
+    const double r = 0.5 * diameter[i];
+    std::array<double, 3> lo{}, width{};
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = full[a] ? g.lo[a] : g.lo[a] + r;
+      width[a] = full[a] ? span[a] : span[a] - 2.0 * r;
+    }
+    std::uint64_t tries = 0;
+    for (;;) {
+      if (tries == kRsaAttemptsPerSphere)
+        fail("voidage",
+             fmt::format("random sequential addition jammed at solid fraction {:.4f} ({} of {} spheres placed; "
+                         "{} random centres for the next sphere, d = {:.4g} m, all overlapped) short of the target "
+                         "{:.4f} (voidage {}). RSA of equal spheres cannot pass a solid fraction of {} (voidage "
+                         "{:.3f}) and slows down well before it: raise the voidage (0.65 or more is safe for equal "
+                         "spheres) or widen the size distribution",
+                         v_placed / v_region, k, n, tries, 2.0 * r, 1.0 - g.voidage, g.voidage, kRsaSaturation,
+                         1.0 - kRsaSaturation));
+      ++tries;
+      const double x = lo[0] + width[0] * uniform01(position_rng);
+      const double y = lo[1] + width[1] * uniform01(position_rng);
+      const double z = lo[2] + width[2] * uniform01(position_rng);
+      if (grid.overlaps(x, y, z, r)) continue;
+      grid.insert(x, y, z, r);
+      out.x.push_back(x);
+      out.y.push_back(y);
+      out.z.push_back(z);
+      out.radius.push_back(r);
+      out.species.push_back(species[i]);
+      v_placed += sphere_volume(diameter[i]);
+      break;
+    }
+    out.attempts += tries;
+  }
+  out.voidage = 1.0 - v_placed / v_region;
+  return out;
+}
+
+}  // namespace sphdem
