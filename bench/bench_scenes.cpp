@@ -46,6 +46,15 @@ startup: {relax_steps: 0}
 }
 BENCHMARK(BM_FluidColumnStep)->Unit(benchmark::kMillisecond)->Iterations(1400)->UseRealTime();
 
+// The peers' dem_settle window (shared/peers/README.md): 500 warm-up and 39 500 timed
+// DEM steps at dt = t_c/20, here 13 and 988 outer steps of 40 sub-steps (520 and 39 520).
+// Compare dem_particle_steps_per_s with LAMMPS 18.99 M/s and LIGGGHTS 13.60 M/s (1 rank),
+// 36.28 and 25.32 M/s (2 ranks); run the peers in the same session for a ratio.
+void BM_DemSettle(benchmark::State& state) {
+  run_steps(state, load_scene(SPHDEM_BENCH_DIR "/dem_settle.yaml"), 13);
+}
+BENCHMARK(BM_DemSettle)->Unit(benchmark::kMillisecond)->Iterations(988)->UseRealTime();
+
 }  // namespace
 
 BENCHMARK_MAIN();

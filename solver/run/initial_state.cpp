@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <random>
 
 #include "run/random_packing.hpp"
 
@@ -56,6 +57,10 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
     const int sp = sc.species_index(g.species);
     const SpeciesSpec& spec = sc.species[sp];
     const int rigid = g.rigid ? group_id++ : -1;
+    // Velocity jitter: uniform in [-1, 1) from the top 53 bits of a seeded generator
+    // (the same numbers on every standard library, unlike std::uniform_real_distribution).
+    std::mt19937_64 jitter_rng(static_cast<std::uint64_t>(g.velocity_seed));
+    auto jitter = [&] { return g.velocity_jitter * (2.0 * static_cast<double>(jitter_rng() >> 11) * 0x1.0p-53 - 1.0); };
     // A sphere of species k and radius r: mass m = rho_p pi d^3 / 6 (2.35).
     auto add = [&](double x, double y, double z, int k, double r) {
       const std::size_t i = s.size();
@@ -63,9 +68,9 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
       s.x[i] = x;
       s.y[i] = y;
       s.z[i] = z;
-      s.vx[i] = g.velocity[0];
-      s.vy[i] = g.velocity[1];
-      s.vz[i] = g.velocity[2];
+      s.vx[i] = g.velocity[0] + jitter();
+      s.vy[i] = g.velocity[1] + jitter();
+      s.vz[i] = g.velocity[2] + jitter();
       s.radius[i] = r;
       const double d = 2.0 * r;
       s.mass[i] = sc.species[k].density * M_PI * d * d * d / 6.0;

@@ -53,6 +53,8 @@ struct ParticleGroupSpec {
   std::vector<double> fractions;            // random: number fractions of `mixture` (sum 1)
   std::int64_t seed = 0;                    // random: seed of the positions and diameters
   std::array<double, 3> velocity{0, 0, 0};
+  double velocity_jitter = 0.0;   // each component + uniform in [-jitter, jitter] (m/s)
+  std::int64_t velocity_seed = 1;  // seed of the jitter
   bool rigid = false;  // constant-porosity block: moves rigidly (thesis §4.5)
 };
 

@@ -346,7 +346,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     const int min_layers = static_cast<int>(std::ceil(2.0 * f.smoothing_factor - 1e-9));
     f.wall_layers = r.integer("wall_layers", std::max(3, min_layers), min_layers, 8);
     r.finish();
-    for (int d = 0; d < 2; ++d) {
+    for (int d = 0; d < 2 && f.enabled; ++d) {  // fluid geometry (no fluid: nothing to fit)
       const double halo = 2.4 * f.smoothing_factor * f.spacing;
       if (sc.box.length(d) < 2.0 * halo)
         r.fail("domain.size", fmt::format("the periodic width {} m must be >= 4.8 smoothing_factor "
@@ -357,7 +357,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
         r.fail("fluid.spacing", fmt::format("must divide the periodic width {} m into a whole number "
                                             "of layers (got {} layers)", sc.box.length(d), n));
     }
-    if (sc.fill_height() < 3 * f.spacing)
+    if (f.enabled && sc.fill_height() < 3 * f.spacing)
       r.fail("fluid.fill_height", "must hold at least 3 fluid layers");
   }
 
@@ -410,6 +410,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       }
       const double radius = 0.5 * sc.species[sc.species_index(g.species)].diameter;
       g.velocity = r.vec3("velocity", {0, 0, 0});
+      g.velocity_jitter = r.number("velocity_jitter", 0.0, 0.0, kInf);
+      g.velocity_seed = r.whole64("velocity_seed", 1, 0, std::numeric_limits<std::int64_t>::max());
       g.rigid = r.boolean("rigid", false);
       if (g.kind == ParticleGroupSpec::Kind::kSingle) {
         g.position = r.vec3("position", {0.5 * sc.box.hi[0], 0.5 * sc.box.hi[1], 0.5 * sc.box.hi[2]});
@@ -644,6 +646,8 @@ std::string scene_to_yaml(const Scene& sc) {
     }
     e << YAML::Key << "velocity" << YAML::Value;
     vec(g.velocity);
+    e << YAML::Key << "velocity_jitter" << YAML::Value << g.velocity_jitter << YAML::Key << "velocity_seed"
+      << YAML::Value << g.velocity_seed;
     e << YAML::Key << "rigid" << YAML::Value << g.rigid << YAML::EndMap;
   }
   e << YAML::EndSeq;
