@@ -44,7 +44,9 @@ struct DemParticles {
     f("x0", x0); f("y0", y0); f("z0", z0); f("overlap_max", overlap_max);
   }
   void resize(std::size_t n) {
+    const std::size_t old = rigid_group.size();
     for_each_field([n](const char*, auto& v) { v.resize(n); });
+    for (std::size_t i = old; i < n; ++i) rigid_group[i] = -1;  // new spheres belong to no rigid group
   }
   double volume(std::size_t i) const {
     return 4.0 / 3.0 * 3.14159265358979323846 * radius[i] * radius[i] * radius[i];
