@@ -39,9 +39,6 @@ enum Pass { kIntegrate, kDem, kNeighbours, kVoidage, kDensity, kMomentum, kInter
 // Margin on the largest kernel support when binning, so that h may grow a little
 // between rebuilds.
 constexpr double kCutoffMargin = 1.05;
-// Steps between re-sorting the owned particles into cell order.
-constexpr int kSortInterval = 20;
-
 }  // namespace
 
 Simulation::Simulation(const Scene& scene) : scene_(scene) {
@@ -363,12 +360,17 @@ void Simulation::advance(bool hold_spheres) {
   u0z_.resize(n);
   rho0_.resize(n);
   const double keep = hold_spheres ? 1.0 - scene_.startup.damping : 1.0;
-  if (++steps_since_sort_ >= kSortInterval) {  // keep neighbours close in memory
+  if (++steps_since_sort_ >= sort_interval_) {  // keep neighbours close in memory
     steps_since_sort_ = 0;
     f.resize(f.n_owned);
     sort_owned_by_cell(f, cell_size_ / 2);
     dem_.resize(dem_.n_owned);
-    if (dem_.n_owned > 0) sort_owned_by_cell(dem_, cell_size_ / 2);
+    if (dem_.n_owned > 0) {
+      sort_owned_by_cell(dem_, cell_size_ / 2);
+      // The contact list and the sphere halo refer to the old order: rebuild them before
+      // the DEM sub-steps use them.
+      rebuild_contact_neighbours();
+    }
   }
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {

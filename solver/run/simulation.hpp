@@ -66,6 +66,8 @@ class Simulation {
   DemParticles& spheres() { return dem_; }
   const DemParticles& spheres() const { return dem_; }
   const PassTimers& timers() const { return timers_; }
+  // Steps between re-sorting the owned particles into cell order (default 20; tests).
+  void set_sort_interval(int steps) { sort_interval_ = steps; }
   Diagnostics diagnostics() const;
   std::size_t fluid_count() const;  // mobile fluid particles
   std::size_t wall_count() const;
@@ -110,6 +112,7 @@ class Simulation {
   double cell_size_ = 0;
   int dem_substeps_ = 0;
   int steps_since_sort_ = 0;
+  int sort_interval_ = 20;
   long steps_ = 0;
   std::size_t voidage_clamped_ = 0, omega_bounded_ = 0;
   PassTimers timers_;
