@@ -9,6 +9,8 @@
 
 #include "coupling/voidage_grid.hpp"
 #include "dem/contact_forces.hpp"
+#include "dem/contact_history.hpp"
+#include "dem/contact_registry.hpp"
 #include "dem/dem_particles.hpp"
 #include "domain/cell_list.hpp"
 #include "domain/neighbour_list.hpp"
@@ -66,6 +68,11 @@ class Simulation {
   DemParticles& spheres() { return dem_; }
   const DemParticles& spheres() const { return dem_; }
   const PassTimers& timers() const { return timers_; }
+  const ContactLaw& contact_law() const { return contact_law_; }
+  // Tangential/rolling contact state (empty for the normal-only law), and its records
+  // keyed by (sphere id, partner id), as a checkpoint would write them.
+  const ContactHistory& contact_history() const { return contact_history_; }
+  std::vector<ContactHistory::Record> contact_records() const { return contact_history_.records(dem_, contacts_); }
   // Steps between re-sorting the owned particles into cell order (default 20; tests).
   void set_sort_interval(int steps) { sort_interval_ = steps; }
   Diagnostics diagnostics() const;
@@ -90,7 +97,7 @@ class Simulation {
   void update_pressure_and_h();
   void compute_fluid_side(bool hold_spheres);
   void dem_half(double dt, bool first_half);
-  void dem_forces(bool accumulate_mean, double weight);
+  void dem_forces(bool accumulate_mean, double weight, double dt_springs = 0.0);
   void check_finite() const;
   double fluid_cutoff() const;
   void next_dt();
@@ -105,6 +112,9 @@ class Simulation {
   NeighbourList fluid_pairs_;  // fluid-fluid pairs within the cell size, each owned pair once
   PairAccumulator pair_scratch_;
   ContactNeighbourList contacts_;
+  ContactLaw contact_law_;
+  ContactHistory contact_history_;
+  bool rotation_ = false;  // tangential or rolling parts: history and spin on
   std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
   int n_groups_ = 0;
