@@ -8,6 +8,8 @@
 //           voidage 0.4765 (layers 0.02 % of d apart, the bottom one just above the wall),
 //           stiffness 100 N/m (54 DEM sub-steps per SPH step), in a 2 mm water column: the
 //           bed lands on the wall and stays packed, and the DEM sub-steps dominate a step.
+//           BM_BedStep: normal contacts only; BM_BedStepFriction: the same bed with
+//           tangential friction (linear_history) and rolling resistance (epsd).
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -64,6 +66,15 @@ void BM_BedStep(benchmark::State& state) {
   run_steps(state, load_scene_text(kBed, "bench_bed"), 20);
 }
 BENCHMARK(BM_BedStep)->Unit(benchmark::kMillisecond)->Iterations(60)->UseRealTime();
+
+void BM_BedStepFriction(benchmark::State& state) {
+  run_steps(state,
+            load_scene_text(kBed, "bench_bed",
+                            {"contact.tangential={model: linear_history, friction: 0.5, restitution: 0.5}",
+                             "contact.rolling={model: epsd, friction: 0.1}"}),
+            20);
+}
+BENCHMARK(BM_BedStepFriction)->Unit(benchmark::kMillisecond)->Iterations(60)->UseRealTime();
 
 }  // namespace
 
