@@ -4,6 +4,12 @@
 //   column: the peers' `sph` scene (shared/peers/README.md): the same 4x4x6 mm water
 //           column, 13200 SPH particles (walls counted, as the peers count them),
 //           c0 = 1 m/s, no spheres; compare with LIGGGHTS' 0.421 M p-s/s (1 rank).
+//   bed:    contact-dominated: 14400 free 100 um spheres on a simple-cubic lattice at
+//           voidage 0.4765 (layers 0.02 % of d apart, the bottom one just above the wall),
+//           stiffness 100 N/m (54 DEM sub-steps per SPH step), in a 2 mm water column: the
+//           bed lands on the wall and stays packed, and the DEM sub-steps dominate a step.
+//           BM_BedStep: normal contacts only; BM_BedStepFriction: the same bed with
+//           tangential friction (linear_history) and rolling resistance (epsd).
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -54,6 +60,30 @@ void BM_DemSettle(benchmark::State& state) {
   run_steps(state, load_scene(SPHDEM_BENCH_DIR "/dem_settle.yaml"), 13);
 }
 BENCHMARK(BM_DemSettle)->Unit(benchmark::kMillisecond)->Iterations(988)->UseRealTime();
+
+const char* const kBed = R"(
+name: bench_bed
+domain: {size: [0.004, 0.004, 0.002]}
+species: [{name: glass, diameter: 1.0e-4, density: 2500}]
+particles:
+  - {type: lattice, species: glass, min: [0, 0, 0], max: [0.004, 0.004, 0.0009002], voidage: 0.4765}
+contact: {stiffness: 100, restitution: 0.5}
+startup: {relax_steps: 5}
+)";
+
+void BM_BedStep(benchmark::State& state) {
+  run_steps(state, load_scene_text(kBed, "bench_bed"), 20);
+}
+BENCHMARK(BM_BedStep)->Unit(benchmark::kMillisecond)->Iterations(60)->UseRealTime();
+
+void BM_BedStepFriction(benchmark::State& state) {
+  run_steps(state,
+            load_scene_text(kBed, "bench_bed",
+                            {"contact.tangential={model: linear_history, friction: 0.5, restitution: 0.5}",
+                             "contact.rolling={model: epsd, friction: 0.1}"}),
+            20);
+}
+BENCHMARK(BM_BedStepFriction)->Unit(benchmark::kMillisecond)->Iterations(60)->UseRealTime();
 
 }  // namespace
 

@@ -13,6 +13,20 @@
 
 namespace sphdem {
 
+// Where the halo copies come from: copy n_owned + g is owned particle source[g] shifted by
+// (shift_x[g], shift_y[g], shift_z[g]), exact multiples of the box lengths. A pass that
+// needs a separation exactly antisymmetric across a periodic face takes it as
+// (x_i - x_source) - shift: the two sides of a pair then compute negatives bit for bit,
+// which x_i - (x_source + shift) does not give (the two images round differently).
+// An MPI halo will provide the same: the owner's coordinates and the shift.
+struct HaloImages {
+  std::size_t n_owned = 0;
+  const std::uint32_t* source = nullptr;
+  const double* shift_x = nullptr;
+  const double* shift_y = nullptr;
+  const double* shift_z = nullptr;
+};
+
 class PeriodicHalo {
  public:
   // Builds the ghost list: every owned particle within `width` of a periodic face
@@ -38,6 +52,7 @@ class PeriodicHalo {
     fill(field.data());
   }
   const std::vector<std::uint32_t>& source() const { return source_; }
+  HaloImages images() const { return {n_owned_, source_.data(), sx_.data(), sy_.data(), sz_.data()}; }
 
  private:
   std::size_t n_owned_ = 0;

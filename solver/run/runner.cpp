@@ -156,6 +156,14 @@ std::string describe_scene(const Scene& sc) {
   const double dt = sim.dt_sph();
   const int sub = sp.n_owned == 0 ? 0 : 2 * std::max(1, static_cast<int>(std::ceil(0.5 * dt / sim.dt_dem_max())));
   s += fmt::format("contact time     t_c = {:.4g} s (k = {} N/m)\n", sim.contact_time(), sc.contact.normal.k);
+  const TangentialParams& tp = sc.contact.tangential;
+  if (tp.model == TangentialParams::Model::kLinearHistory)
+    s += fmt::format("friction         linear_history: k_t = {:.4g} N/m, mu = {}, {}\n", tp.stiffness_ratio * sc.contact.normal.k,
+                     tp.friction, tp.restitution > 0 ? fmt::format("e_t = {}", tp.restitution)
+                                                     : fmt::format("gamma_t = {} kg/s", tp.damping));
+  if (sc.contact.rolling.model == RollingParams::Model::kEpsd)
+    s += fmt::format("rolling          epsd: mu_r = {}, eta_r = {}\n", sc.contact.rolling.friction,
+                     sc.contact.rolling.damping_ratio);
   s += fmt::format("time steps       dt_SPH = {:.4g} s (CFL {}), dt_DEM = {:.4g} s, {} DEM sub-steps per SPH step\n",
                    dt, sc.time.cfl, sub > 0 ? dt / sub : 0.0, sub);
   s += fmt::format("run              {} relaxation steps, then t = 0 .. {} s: about {:.0f} SPH steps\n",

@@ -9,6 +9,8 @@
 
 #include "coupling/drag_laws.hpp"
 #include "dem/contact_model.hpp"
+#include "dem/rolling_model.hpp"
+#include "dem/tangential_model.hpp"
 #include "domain/box.hpp"
 #include "run/size_distribution.hpp"
 
@@ -60,6 +62,8 @@ struct ParticleGroupSpec {
 
 struct ContactSpec {
   LinearSpringDashpot normal{10.0, 0.0, -1.0, false};
+  TangentialParams tangential;  // model none unless the scene turns friction on
+  RollingParams rolling;        // model none unless the scene turns rolling resistance on
   double skin = 0.3;  // Verlet skin as a fraction of the largest diameter
 };
 

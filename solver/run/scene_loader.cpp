@@ -452,6 +452,40 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     n.restitution = has_e ? r.number("restitution", 1.0, 0.0, 1.0, true) : -1.0;
     n.clip_attraction = r.boolean("clip_attraction", false);
     sc.contact.skin = r.number("skin", sc.contact.skin, 0.0, 2.0);
+    {
+      // Keys other than 'model' exist only for a model that has them (unknown otherwise).
+      MapReader t(r.child("tangential"), "contact.tangential", file);
+      TangentialParams& tp = sc.contact.tangential;
+      const std::string model = t.choice("model", "none", {"none", "linear_history"});
+      tp = TangentialParams{};
+      if (model == "linear_history") {
+        tp.model = TangentialParams::Model::kLinearHistory;
+        tp.stiffness_ratio = t.number("stiffness_ratio", tp.stiffness_ratio, 0.0, 1.0, true);
+        const bool has_gamma = t.has("damping"), has_et = t.has("restitution");
+        if (has_gamma && has_et)
+          t.fail("contact.tangential.restitution", "give either 'damping' (kg/s) or 'restitution', not both");
+        tp.damping = t.number("damping", 0.0, 0.0, kInf);
+        tp.restitution = has_et ? t.number("restitution", 1.0, 0.0, 1.0, true) : -1.0;
+        tp.friction = t.required("friction", 0.0, kInf);
+      }
+      t.finish();
+    }
+    {
+      MapReader t(r.child("rolling"), "contact.rolling", file);
+      RollingParams& rp = sc.contact.rolling;
+      const std::string model = t.choice("model", "none", {"none", "epsd"});
+      rp = RollingParams{};
+      if (model == "epsd") {
+        rp.model = RollingParams::Model::kEpsd;
+        rp.friction = t.required("friction", 0.0, 1.0);
+        rp.damping_ratio = t.number("damping_ratio", rp.damping_ratio, 0.0, kInf);
+        if (sc.contact.tangential.model == TangentialParams::Model::kNone)
+          t.fail("contact.rolling.model", "'epsd' needs tangential friction (contact.tangential.model: "
+                                          "linear_history); the registered combinations of tangential + "
+                                          "rolling are none + none, linear_history + none, linear_history + epsd");
+      }
+      t.finish();
+    }
     r.finish();
   }
   {
@@ -657,7 +691,28 @@ std::string scene_to_yaml(const Scene& sc) {
   if (n.restitution > 0) e << YAML::Key << "restitution" << YAML::Value << n.restitution;
   else e << YAML::Key << "damping" << YAML::Value << n.beta;
   e << YAML::Key << "clip_attraction" << YAML::Value << n.clip_attraction << YAML::Key << "skin" << YAML::Value
-    << sc.contact.skin << YAML::EndMap;
+    << sc.contact.skin;
+  const TangentialParams& tp = sc.contact.tangential;
+  e << YAML::Key << "tangential" << YAML::Value << YAML::BeginMap;
+  if (tp.model == TangentialParams::Model::kNone) {
+    e << YAML::Key << "model" << YAML::Value << "none";
+  } else {
+    e << YAML::Key << "model" << YAML::Value << "linear_history" << YAML::Key << "stiffness_ratio" << YAML::Value
+      << tp.stiffness_ratio;
+    if (tp.restitution > 0) e << YAML::Key << "restitution" << YAML::Value << tp.restitution;
+    else e << YAML::Key << "damping" << YAML::Value << tp.damping;
+    e << YAML::Key << "friction" << YAML::Value << tp.friction;
+  }
+  e << YAML::EndMap;
+  const RollingParams& rp = sc.contact.rolling;
+  e << YAML::Key << "rolling" << YAML::Value << YAML::BeginMap;
+  if (rp.model == RollingParams::Model::kNone) {
+    e << YAML::Key << "model" << YAML::Value << "none";
+  } else {
+    e << YAML::Key << "model" << YAML::Value << "epsd" << YAML::Key << "friction" << YAML::Value << rp.friction
+      << YAML::Key << "damping_ratio" << YAML::Value << rp.damping_ratio;
+  }
+  e << YAML::EndMap << YAML::EndMap;
   e << YAML::Key << "drag" << YAML::Value << YAML::BeginMap << YAML::Key << "law" << YAML::Value
     << drag::drag_law_name(sc.drag) << YAML::EndMap;
   e << YAML::Key << "coupling" << YAML::Value << YAML::BeginMap << YAML::Key << "voidage_floor" << YAML::Value

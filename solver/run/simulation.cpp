@@ -12,6 +12,7 @@
 #include "coupling/interpolation.hpp"
 #include "coupling/reaction.hpp"
 #include "coupling/voidage.hpp"
+#include "dem/rotation.hpp"
 #include "domain/reorder.hpp"
 #include "run/initial_state.hpp"
 #include "sph/density_rate.hpp"
@@ -76,6 +77,25 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
     };
     consider(masses[a]);  // wall
     for (std::size_t b = a; b < masses.size(); ++b) consider(masses[a] * masses[b] / (masses[a] + masses[b]));
+  }
+  // The contact law (contact_registry.hpp); tangential or rolling parts turn on the
+  // contact history and the spheres' rotation.
+  try {
+    contact_law_ = make_contact_law(ContactParams{law, scene_.contact.tangential, scene_.contact.rolling});
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(fmt::format("{}: key 'contact.rolling': {}", scene_.source, e.what()));
+  }
+  rotation_ = contact_law_has_history(contact_law_);
+  // With tangential friction, dt_DEM also resolves the undamped period of a sticking
+  // contact, pi sqrt(m_t/k_t) with m_t = 2/7 m12 (the normal one for k_t = 2/7 k). The
+  // rolling spring is slower (k_r/I_r <= 0.8 mu_r^2 k/m for equal spheres).
+  if (scene_.contact.tangential.model != TangentialParams::Model::kNone) {
+    const double kt = scene_.contact.tangential.stiffness_ratio * law.k;
+    for (std::size_t a = 0; a < masses.size(); ++a) {
+      t_contact_ = std::min(t_contact_, M_PI * std::sqrt(2.0 / 7.0 * masses[a] / kt));  // wall
+      for (std::size_t b = a; b < masses.size(); ++b)
+        t_contact_ = std::min(t_contact_, M_PI * std::sqrt(2.0 / 7.0 * masses[a] * masses[b] / (masses[a] + masses[b]) / kt));
+    }
   }
   dt_dem_max_ = std::min(t_contact_ / scene_.time.dem_steps_per_contact, 0.1 * t_drag);
 
@@ -152,9 +172,12 @@ void Simulation::rebuild_neighbours() {
 
 // Sphere halo (wide enough for the fluid kernel and for contacts), the sphere cells
 // at the fluid cut-off, and the contact list at its own cut-off.
+// With tangential or rolling parts, the contact history goes to its id-keyed store
+// before the list changes and comes back aligned with the new list.
 void Simulation::rebuild_contact_neighbours() {
   DemParticles& s = dem_;
   const Box& box = scene_.box;
+  if (rotation_) contact_history_.save(s, contacts_);  // no-op if already saved (a sort)
   for (std::size_t i = 0; i < s.n_owned; ++i) {
     s.x[i] = box.wrap(0, s.x[i]);
     s.y[i] = box.wrap(1, s.y[i]);
@@ -171,11 +194,15 @@ void Simulation::rebuild_contact_neighbours() {
   s.resize(s.n_owned + dem_halo_.n_ghost());
   dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
   for (auto* v : {&s.vx, &s.vy, &s.vz, &s.radius, &s.mass}) dem_halo_.fill(*v);
+  dem_halo_.fill(s.id);
+  if (rotation_)
+    for (auto* v : {&s.wx, &s.wy, &s.wz}) dem_halo_.fill(*v);
   dem_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cell_size_, 2);
   if (s.n_owned > 0) {
     contact_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
     contacts_.build(s, contact_cells_, skin);
   }
+  if (rotation_) contact_history_.load(s, contacts_);
 }
 
 void Simulation::update_smoothing_length() {
@@ -256,13 +283,16 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   lap(kReaction);
 }
 
-// Fluid force (2.68) and contact force (2.36) on each owned sphere, then the
-// acceleration (2.35); rigid groups share their total force equally (thesis §4.5).
-// With accumulate_mean, adds weight * (fluid force) to the step-mean force fm.
-void Simulation::dem_forces(bool accumulate_mean, double weight) {
+// Fluid force (2.68) and contact force (2.36, with the tangential and rolling parts of
+// the scene's contact law) on each owned sphere, then the acceleration (2.35); rigid
+// groups share their total force equally (thesis §4.5). With accumulate_mean, adds
+// weight * (fluid force) to the step-mean force fm. dt_springs: time by which the
+// tangential and rolling springs advance (the sub-step; 0 for an evaluation that is
+// not a step).
+void Simulation::dem_forces(bool accumulate_mean, double weight, double dt_springs) {
   DemParticles& s = dem_;
   if (s.n_owned == 0) return;
-  compute_contact_forces(s, contacts_, scene_.contact.normal, 0.0);
+  compute_contact_forces(s, contacts_, contact_law_, contact_history_, dem_halo_.images(), 0.0, dt_springs);
   const long n = static_cast<long>(s.n_owned);
   const auto& g = scene_.gravity;
   std::visit(
@@ -348,19 +378,23 @@ void Simulation::dem_half(double dt, bool first_half) {
       const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
       max_disp2 = std::max(max_disp2, dx * dx + dy * dy + dz * dz);
     }
+    if (rotation_) predict_spin(s, h, torque_old_);
     if (max_disp2 > half_skin * half_skin) {
       rebuild_contact_neighbours();
     } else {
       dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
       for (auto* v : {&s.vx, &s.vy, &s.vz}) dem_halo_.fill(*v);
+      if (rotation_)
+        for (auto* v : {&s.wx, &s.wy, &s.wz}) dem_halo_.fill(*v);
     }
-    dem_forces(true, 0.5 * h / dt);
+    dem_forces(true, 0.5 * h / dt, h);
 #pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
     for (long j = 0; j < n; ++j) {  // v_n + h (a_old + a_new)/2
       s.vx[j] += 0.5 * h * (s.ax[j] - a_old_x_[j]);
       s.vy[j] += 0.5 * h * (s.ay[j] - a_old_y_[j]);
       s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[j]);
     }
+    if (rotation_) correct_spin(s, h, torque_old_);
   }
 }
 
@@ -398,10 +432,11 @@ void Simulation::advance(bool hold_spheres) {
   u0z_.resize(n);
   rho0_.resize(n);
   const double keep = hold_spheres ? 1.0 - scene_.startup.damping : 1.0;
-  if (++steps_since_sort_ >= kSortInterval) {  // keep neighbours close in memory
+  if (++steps_since_sort_ >= sort_interval_) {  // keep neighbours close in memory
     steps_since_sort_ = 0;
     f.resize(f.n_owned);
     sort_owned_by_cell(f, cell_size_ / 2);
+    if (rotation_) contact_history_.save(dem_, contacts_);  // while the list matches the arrays
     dem_.resize(dem_.n_owned);
     if (dem_.n_owned > 0) sort_owned_by_cell(dem_, cell_size_ / 2);
     rebuild_contact_neighbours();  // the DEM sub-steps below use the halo and contact list
@@ -475,7 +510,7 @@ void Simulation::check_finite() const {
                                            steps_, time_, f.id[a]));
   const DemParticles& s = dem_;
   for (std::size_t j = 0; j < s.n_owned; ++j)
-    if (!std::isfinite(s.x[j] + s.y[j] + s.z[j] + s.vx[j] + s.vy[j] + s.vz[j]))
+    if (!std::isfinite(s.x[j] + s.y[j] + s.z[j] + s.vx[j] + s.vy[j] + s.vz[j] + s.wx[j] + s.wy[j] + s.wz[j]))
       throw std::runtime_error(fmt::format("step {} (t = {:.6g} s): sphere id {} has a non-finite state; "
                                            "raise time.dem_steps_per_contact",
                                            steps_, time_, s.id[j]));

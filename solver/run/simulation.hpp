@@ -10,7 +10,10 @@
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "coupling/voidage_grid.hpp"
 #include "dem/contact_forces.hpp"
+#include "dem/contact_history.hpp"
+#include "dem/contact_registry.hpp"
 #include "dem/dem_particles.hpp"
+#include "dem/rotation.hpp"
 #include "domain/cell_list.hpp"
 #include "domain/neighbour_list.hpp"
 #include "domain/periodic_halo.hpp"
@@ -67,6 +70,13 @@ class Simulation {
   DemParticles& spheres() { return dem_; }
   const DemParticles& spheres() const { return dem_; }
   const PassTimers& timers() const { return timers_; }
+  const ContactLaw& contact_law() const { return contact_law_; }
+  // Tangential/rolling contact state (empty for the normal-only law), and its records
+  // keyed by (sphere id, partner id), as a checkpoint would write them.
+  const ContactHistory& contact_history() const { return contact_history_; }
+  std::vector<ContactHistory::Record> contact_records() const { return contact_history_.records(dem_, contacts_); }
+  // Steps between re-sorting the owned particles into cell order (default 20; tests).
+  void set_sort_interval(int steps) { sort_interval_ = steps; }
   Diagnostics diagnostics() const;
   std::size_t fluid_count() const;  // mobile fluid particles
   std::size_t wall_count() const;
@@ -90,7 +100,7 @@ class Simulation {
   void update_pressure();
   void compute_fluid_side(bool hold_spheres);
   void dem_half(double dt, bool first_half);
-  void dem_forces(bool accumulate_mean, double weight);
+  void dem_forces(bool accumulate_mean, double weight, double dt_springs = 0.0);
   void check_finite() const;
   double fluid_cutoff() const;
   void next_dt();
@@ -107,14 +117,19 @@ class Simulation {
   FluidSpherePairs sphere_pairs_;  // fluid-sphere pairs of the step with their kernel values
   PairAccumulator sphere_scratch_;
   ContactNeighbourList contacts_;
+  ContactLaw contact_law_;
+  ContactHistory contact_history_;
+  bool rotation_ = false;  // tangential or rolling parts: history and spin on
   std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
   std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // sphere accelerations of the previous sub-step
+  OldTorque torque_old_;                              // sphere torques of the previous sub-step
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
   int n_groups_ = 0;
   double time_ = 0, dt_sph_ = 0, dt_dem_ = 0, dt_dem_max_ = 0, t_contact_ = 0;
   double cell_size_ = 0;
   int dem_substeps_ = 0;
   int steps_since_sort_ = 0;
+  int sort_interval_ = 20;
   long steps_ = 0;
   std::size_t voidage_clamped_ = 0, omega_bounded_ = 0;
   PassTimers timers_;

@@ -71,3 +71,43 @@ TEST(DryDem, BounceAtTheDefaultSubStep) {
   std::printf("t_c/20: apex %.7g m (%+.3f %%)\n", apex, 100 * (apex / expected - 1));
   EXPECT_NEAR(apex, expected, 0.01 * expected);
 }
+
+// The spin in Simulation's DEM sub-step (predicted w, corrected with the mean torque, as
+// the translation): a sphere released on the wall at v0 without spin slides with friction
+// mu m g until its contact point stops, then rolls. Angular momentum about the contact
+// point is conserved (friction, the normal force and gravity have no moment about it), so
+// it rolls at v = v0 / (1 + I / (m h^2)) with h = r - m g / k the centre's height
+// (5/7 v0 for h = r), reached at t = v0 / (mu g (1 + m h^2 / I)) (2 v0 / (7 mu g)).
+TEST(DryDem, SlidingSphereRollsAtFiveSevenths) {
+  const double r = 5e-5, g = 9.81, k = 10, mu = 0.3, v0 = 0.02;
+  const double m = 2500 * M_PI / 6 * std::pow(2 * r, 3), inertia = 0.4 * m * r * r;
+  const double h = r - m * g / k;
+  // Placed touching the wall, it sinks to the resting overlap m g / k in a strongly damped
+  // normal oscillation (e_n = 0.3, a few t_c = 36 us) whose net vertical impulse, and so
+  // net friction impulse, is zero: afterwards v = v0 - mu g t exactly.
+  const Scene sc = load_scene_text(
+      kDrop, "dry_drop.yaml",
+      {"particles.0.position=[0.001, 0.001, 5e-5]", "particles.0.velocity=[0.02, 0, 0]", "contact.restitution=0.3",
+       "contact.tangential={model: linear_history, friction: 0.3, restitution: 0.5}"});
+  Simulation sim(sc);
+  const double t_roll = v0 / (mu * g * (1.0 + m * h * h / inertia));
+  const double v_roll = v0 / (1.0 + inertia / (m * h * h));
+  double t_stick = -1, prev_slip = v0, prev_t = 0;
+  while (sim.time() < 3.0 * t_roll) {
+    sim.step();
+    const DemParticles& s = sim.spheres();
+    const double slip = s.vx[0] - s.z[0] * s.wy[0];
+    if (t_stick < 0 && slip <= 0) t_stick = sim.time() - (sim.time() - prev_t) * slip / (slip - prev_slip);
+    prev_slip = slip;
+    prev_t = sim.time();
+    if (t_stick < 0 && sim.time() > 0.25 * t_roll && sim.time() < 0.9 * t_roll) {  // sliding
+      EXPECT_NEAR(s.vx[0], v0 - mu * g * sim.time(), 1e-6 * v0);
+    }
+  }
+  const DemParticles& s = sim.spheres();
+  std::printf("stick at %.6g s (closed form %.6g s), rolling at %.8g v0 (closed form %.8g, 5/7 = %.8g)\n", t_stick,
+              t_roll, s.vx[0] / v0, v_roll / v0, 5.0 / 7.0);
+  EXPECT_NEAR(t_stick, t_roll, 0.02 * t_roll);  // found at SPH-step resolution (2e-5 s)
+  EXPECT_NEAR(s.vx[0], v_roll, 1e-5 * v0);
+  EXPECT_NEAR(s.z[0] * s.wy[0], s.vx[0], 1e-5 * v0);  // rolling without slip
+}

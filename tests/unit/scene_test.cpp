@@ -82,6 +82,8 @@ contact:
   restitution: 0.7
   clip_attraction: true
   skin: 0.5
+  tangential: {model: linear_history, stiffness_ratio: 0.4, restitution: 0.6, friction: 0.45}
+  rolling: {model: epsd, friction: 0.12, damping_ratio: 0.25}
 drag:
   law: brown_lawler
 coupling:
@@ -214,6 +216,14 @@ void expect_same_scene(const Scene& a, const Scene& b, double rel) {
   same(a.contact.normal.restitution, b.contact.normal.restitution, "contact.restitution");
   EXPECT_EQ(a.contact.normal.clip_attraction, b.contact.normal.clip_attraction);
   same(a.contact.skin, b.contact.skin, "contact.skin");
+  EXPECT_EQ(a.contact.tangential.model, b.contact.tangential.model);
+  same(a.contact.tangential.stiffness_ratio, b.contact.tangential.stiffness_ratio, "contact.tangential.stiffness_ratio");
+  same(a.contact.tangential.damping, b.contact.tangential.damping, "contact.tangential.damping");
+  same(a.contact.tangential.restitution, b.contact.tangential.restitution, "contact.tangential.restitution");
+  same(a.contact.tangential.friction, b.contact.tangential.friction, "contact.tangential.friction");
+  EXPECT_EQ(a.contact.rolling.model, b.contact.rolling.model);
+  same(a.contact.rolling.friction, b.contact.rolling.friction, "contact.rolling.friction");
+  same(a.contact.rolling.damping_ratio, b.contact.rolling.damping_ratio, "contact.rolling.damping_ratio");
   EXPECT_EQ(a.drag.index(), b.drag.index());
   same(a.voidage_floor, b.voidage_floor, "coupling.voidage_floor");
   same(a.time.end, b.time.end, "time.end");
@@ -296,6 +306,8 @@ TEST(SceneDefaults, EmptyTextGivesTheDefaults) {
   EXPECT_LT(sc.contact.normal.restitution, 0.0);  // damping given (default 0), not restitution
   EXPECT_FALSE(sc.contact.normal.clip_attraction);
   EXPECT_EQ(sc.contact.skin, 0.3);
+  EXPECT_EQ(sc.contact.tangential.model, TangentialParams::Model::kNone);  // normal contact only
+  EXPECT_EQ(sc.contact.rolling.model, RollingParams::Model::kNone);
   EXPECT_EQ(drag::drag_law_name(sc.drag), "stokes");
   EXPECT_EQ(sc.voidage_floor, 0.3);
   EXPECT_EQ(sc.time.end, 0.02);
@@ -459,6 +471,55 @@ TEST(SceneErrors, DampingAndRestitutionExclusive) {
   EXPECT_LT(d.contact.normal.restitution, 0.0);
 }
 
+TEST(SceneContactParts, TangentialAndRollingKeys) {
+  // defaults of a turned-on model
+  Scene sc = load_scene_text(kBase + "contact: {tangential: {model: linear_history, friction: 0.5}}\n", kFile);
+  EXPECT_EQ(sc.contact.tangential.model, TangentialParams::Model::kLinearHistory);
+  EXPECT_EQ(sc.contact.tangential.stiffness_ratio, 2.0 / 7.0);
+  EXPECT_EQ(sc.contact.tangential.damping, 0.0);
+  EXPECT_LT(sc.contact.tangential.restitution, 0.0);
+  EXPECT_EQ(sc.contact.tangential.friction, 0.5);
+  EXPECT_EQ(sc.contact.rolling.model, RollingParams::Model::kNone);
+  sc = load_scene_text(kBase, kFile, {"contact.tangential={model: linear_history, friction: 0.3, damping: 1.0e-6}",
+                                      "contact.rolling={model: epsd, friction: 0.1}"});
+  EXPECT_EQ(sc.contact.tangential.damping, 1.0e-6);
+  EXPECT_EQ(sc.contact.rolling.model, RollingParams::Model::kEpsd);
+  EXPECT_EQ(sc.contact.rolling.friction, 0.1);
+  EXPECT_EQ(sc.contact.rolling.damping_ratio, 0.3);
+  // explicit none is the default
+  sc = load_scene_text(kBase + "contact: {tangential: {model: none}, rolling: {model: none}}\n", kFile);
+  EXPECT_EQ(sc.contact.tangential.model, TangentialParams::Model::kNone);
+  // keys of a model that is off are unknown; the model names are listed
+  error_of(kBase + "contact: {tangential: {friction: 0.5}}\n",
+           {kFile, "'contact.tangential.friction'", "unknown key", "allowed here: model"});
+  error_of(kBase + "contact: {rolling: {damping_ratio: 0.5}}\n", {"'contact.rolling.damping_ratio'", "unknown"});
+  error_of(kBase + "contact: {tangential: {model: coulomb}}\n",
+           {"'contact.tangential.model'", "none, linear_history", "coulomb"});
+  error_of(kBase + "contact: {rolling: {model: cdt}}\n", {"'contact.rolling.model'", "none, epsd"});
+  error_of(kBase + "contact: {tangential: {model: linear_history, friction: 0.5, frction: 1}}\n",
+           {"'contact.tangential.frction'", "allowed here", "friction", "stiffness_ratio", "restitution"});
+  error_of(kBase + "contact: {tangential: linear_history}\n", {"'contact.tangential'", "map"});
+  // required, ranges, exclusive keys
+  error_of(kBase + "contact: {tangential: {model: linear_history}}\n",
+           {"'contact.tangential.friction'", "required"});
+  error_of(kBase + "contact: {tangential: {model: linear_history, friction: -0.1}}\n",
+           {"'contact.tangential.friction'", "[0, inf]"});
+  error_of(kBase + "contact: {tangential: {model: linear_history, friction: 0.5, stiffness_ratio: 0}}\n",
+           {"'contact.tangential.stiffness_ratio'", "(0, 1]"});
+  error_of(kBase + "contact: {tangential: {model: linear_history, friction: 0.5, damping: 1.0e-6, restitution: 0.5}}\n",
+           {"'contact.tangential.restitution'", "not both"});
+  error_of(kBase + "contact: {tangential: {model: linear_history, friction: 0.5, restitution: 0}}\n",
+           {"'contact.tangential.restitution'", "(0, 1]"});
+  const std::string friction = "contact: {tangential: {model: linear_history, friction: 0.5}, rolling: ";
+  error_of(kBase + friction + "{model: epsd}}\n", {"'contact.rolling.friction'", "required"});
+  error_of(kBase + friction + "{model: epsd, friction: 1.5}}\n", {"'contact.rolling.friction'", "[0, 1]"});
+  error_of(kBase + friction + "{model: epsd, friction: 0.1, damping_ratio: -1}}\n",
+           {"'contact.rolling.damping_ratio'", "[0, inf]"});
+  // the registry has no rolling resistance without friction
+  error_of(kBase + "contact: {rolling: {model: epsd, friction: 0.1}}\n",
+           {kFile, "'contact.rolling.model'", "linear_history", "none + none"});
+}
+
 // ---------------------------------------------------------------------------------
 // --set overrides
 
@@ -555,6 +616,21 @@ TEST(SceneRoundTrip, ReloadsToTheSameScene) {
   EXPECT_EQ(b.fluid.gamma, 5);
   EXPECT_EQ(b.fluid.wall_layers, 4);
   EXPECT_EQ(b.startup.relax_steps, 17);
+  EXPECT_EQ(b.contact.tangential.model, TangentialParams::Model::kLinearHistory);
+  EXPECT_EQ(b.contact.tangential.stiffness_ratio, 0.4);
+  EXPECT_EQ(b.contact.tangential.restitution, 0.6);
+  EXPECT_EQ(b.contact.tangential.friction, 0.45);
+  EXPECT_EQ(b.contact.rolling.model, RollingParams::Model::kEpsd);
+  EXPECT_EQ(b.contact.rolling.friction, 0.12);
+  EXPECT_EQ(b.contact.rolling.damping_ratio, 0.25);
+  // damping-based tangential part, and the off state, round-trip too
+  for (const std::string& t : {std::string("{model: linear_history, damping: 3.0e-7, friction: 0.2}"),
+                               std::string("{model: none}")}) {
+    const Scene c = load_scene_text(kBase, kFile, {"contact.tangential=" + t});
+    const Scene d = load_scene_text(scene_to_yaml(c), "case.yaml");
+    expect_same_scene(c, d, 0.0);
+    EXPECT_EQ(scene_to_yaml(d), scene_to_yaml(c));
+  }
 }
 
 // LOADER PROBLEM (scene_loader.cpp:348, SetDoublePrecision(12)): case.yaml keeps 12
@@ -844,6 +920,11 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
       {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: lognormal, "
                                        "median: 1, sigma_ln: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
       {"contact.", "contact: {zz_unknown: 1}\n"},
+      {"contact.tangential.", "contact: {tangential: {zz_unknown: 1}}\n"},
+      {"contact.tangential.", "contact: {tangential: {model: linear_history, friction: 0.5, zz_unknown: 1}}\n"},
+      {"contact.rolling.", "contact: {rolling: {zz_unknown: 1}}\n"},
+      {"contact.rolling.", "contact: {tangential: {model: linear_history, friction: 0.5}, "
+                           "rolling: {model: epsd, friction: 0.1, zz_unknown: 1}}\n"},
       {"drag.", "drag: {zz_unknown: 1}\n"},
       {"coupling.", "coupling: {zz_unknown: 1}\n"},
       {"time.", "time: {zz_unknown: 1}\n"},
