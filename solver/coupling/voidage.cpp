@@ -3,7 +3,7 @@
 namespace sphdem {
 
 std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
-                                  double eps_floor) {
+                                  double eps_floor, const BigSpheresSmoothedApart* big) {
   const long n = static_cast<long>(f.n_owned);
   std::size_t clamped = 0;
 #pragma omp parallel for schedule(static) reduction(+ : clamped)
@@ -11,9 +11,14 @@ std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, cons
     double solid = 0.0, solid_over_d = 0.0;
     for (std::uint32_t k = pairs.list.begin(a); k < pairs.list.end(a); ++k) {
       const std::uint32_t j = pairs.list.neighbour[k];
+      if (big && big->is_big[s.species[j]]) continue;  // smoothed apart (3.8)
       const double vw = s.volume(j) * pairs.w[k];
       solid += vw;
       solid_over_d += vw / (2.0 * s.radius[j]);
+    }
+    if (big) {  // (3.10)
+      solid += big->solid[a];
+      solid_over_d += big->solid_over_d[a];
     }
     // Sauter mean (sum_i x_i / d_i)^-1 with the kernel-weighted volume fractions x_i (2.80)
     f.d_sauter[a] = solid_over_d > 0.0 ? solid / solid_over_d : 0.0;

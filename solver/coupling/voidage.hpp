@@ -1,9 +1,21 @@
 #pragma once
+#include <cstdint>
+#include <vector>
+
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
 #include "sph/fluid_particles.hpp"
 
 namespace sphdem {
+
+// The big spheres' part of the voidage when it is double smoothed (double_smoothing.hpp):
+// their species are skipped in the sum over pairs and their re-smoothed solid fraction
+// added instead (3.8-3.10).
+struct BigSpheresSmoothedApart {
+  const std::vector<std::uint8_t>& is_big;  // per species
+  const std::vector<double>& solid;         // per owned SPH particle
+  const std::vector<double>& solid_over_d;
+};
 
 // Voidage at every owned SPH particle a (fluid and wall) from its sphere pairs:
 //   eps_a = 1 - sum_j V_j W(r_a - r_j, h_a)   (2.50),
@@ -11,6 +23,6 @@ namespace sphdem {
 // eps is clamped to eps_floor (default 0.3): the kernel estimate can undershoot in a
 // dense sediment; returns how many particles were clamped (logged per step).
 std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
-                                  double eps_floor);
+                                  double eps_floor, const BigSpheresSmoothedApart* big = nullptr);
 
 }  // namespace sphdem

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -29,6 +30,43 @@ BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g, double d
   L.voidage = 1.0 - V / (L.spacing[0] * L.spacing[1] * L.spacing[2]);
   return L;
 }
+
+BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g) {
+  if (g.mixture.size() <= 1) return block_lattice(sc, g, sc.species[sc.species_index(g.species)].diameter);
+  double d3 = 0.0;
+  for (std::size_t i = 0; i < g.mixture.size(); ++i) d3 += g.fractions[i] * std::pow(sc.species[sc.species_index(g.mixture[i])].diameter, 3);
+  return block_lattice(sc, g, std::cbrt(d3));
+}
+
+namespace {
+
+// Species of each of n lattice sites for the number fractions x_i: counts by largest
+// remainder (exact to one sphere), then a seeded Fisher-Yates shuffle (the top bits of
+// mt19937_64, so the same sites on every standard library).
+std::vector<int> deal_species(const Scene& sc, const ParticleGroupSpec& g, std::size_t n) {
+  std::vector<int> site(n, sc.species_index(g.species));
+  if (g.mixture.size() <= 1) return site;
+  const std::size_t m = g.mixture.size();
+  std::vector<std::size_t> count(m);
+  std::vector<std::pair<double, std::size_t>> remainder;
+  std::size_t dealt = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    const double want = g.fractions[i] * static_cast<double>(n);
+    count[i] = static_cast<std::size_t>(std::floor(want));
+    dealt += count[i];
+    remainder.emplace_back(want - std::floor(want), i);
+  }
+  std::sort(remainder.begin(), remainder.end(), [](auto& a, auto& b) { return a.first > b.first; });
+  for (std::size_t k = 0; dealt < n; ++k, ++dealt) ++count[remainder[k % m].second];
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t c = 0; c < count[i]; ++c) site[k++] = sc.species_index(g.mixture[i]);
+  std::mt19937_64 rng(static_cast<std::uint64_t>(g.seed));
+  for (std::size_t i = n; i > 1; --i) std::swap(site[i - 1], site[(rng() >> 11) % i]);
+  return site;
+}
+
+}  // namespace
 
 void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
   const double dx = sc.fluid.spacing;
@@ -88,22 +126,28 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
       for (std::size_t j = 0; j < P.x.size(); ++j) add(P.x[j], P.y[j], P.z[j], P.species[j], P.radius[j]);
       continue;
     }
-    const BlockLattice L = block_lattice(sc, g, spec.diameter);
+    const BlockLattice L = block_lattice(sc, g);
+    double d_max = spec.diameter;
+    for (const auto& name : g.mixture) d_max = std::max(d_max, sc.species[sc.species_index(name)].diameter);
     for (int c = 0; c < 3; ++c) {
       if (L.count[c] < 1)
         throw SceneError(fmt::format("{}: key 'particles.{}': the region holds no lattice site along "
                                      "axis {} (spacing {} m)", sc.source, gi, "xyz"[c], L.spacing[c]));
-      if (L.spacing[c] < spec.diameter * (1.0 - 1e-9))
+      if (L.spacing[c] < d_max * (1.0 - 1e-9))
         throw SceneError(fmt::format("{}: key 'particles.{}.voidage': lattice spacing {} m along {} is "
-                                     "below the diameter {} m; raise the voidage or widen the region",
-                                     sc.source, gi, L.spacing[c], "xyz"[c], spec.diameter));
+                                     "below the largest diameter {} m; raise the voidage or widen the region",
+                                     sc.source, gi, L.spacing[c], "xyz"[c], d_max));
     }
-    if (L.origin[2] - 0.5 * L.spacing[2] < 0 || L.origin[2] < r)
+    if (L.origin[2] - 0.5 * L.spacing[2] < 0 || L.origin[2] < 0.5 * d_max)
       throw SceneError(fmt::format("{}: key 'particles.{}.min': the block cuts the bottom wall", sc.source, gi));
+    const std::vector<int> site =
+        deal_species(sc, g, static_cast<std::size_t>(L.count[0]) * L.count[1] * L.count[2]);
+    std::size_t k = 0;
     for (int iz = 0; iz < L.count[2]; ++iz)
       for (int iy = 0; iy < L.count[1]; ++iy)
-        for (int ix = 0; ix < L.count[0]; ++ix)
-          add(L.origin[0] + ix * L.spacing[0], L.origin[1] + iy * L.spacing[1], L.origin[2] + iz * L.spacing[2], sp, r);
+        for (int ix = 0; ix < L.count[0]; ++ix, ++k)
+          add(L.origin[0] + ix * L.spacing[0], L.origin[1] + iy * L.spacing[1], L.origin[2] + iz * L.spacing[2],
+              site[k], 0.5 * sc.species[site[k]].diameter);
   }
   s.n_owned = s.size();
 }

@@ -20,5 +20,9 @@ struct BlockLattice {
   double voidage = 0;  // actual voidage of the lattice
 };
 BlockLattice block_lattice(const Scene& scene, const ParticleGroupSpec& group, double diameter);
+// The same for the group's own species: for a mixed lattice (bidisperse block, §4.6) the
+// sites are spaced for the mean sphere volume, d = (sum_i x_i d_i^3)^(1/3) with the
+// number fractions x_i, so the block has the target voidage.
+BlockLattice block_lattice(const Scene& scene, const ParticleGroupSpec& group);
 
 }  // namespace sphdem

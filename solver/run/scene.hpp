@@ -95,6 +95,17 @@ struct InSituSpec {
   bool enabled = true;
 };
 
+// Bidisperse voidage by double smoothing (thesis §3.4, 3.8-3.10): the big species are
+// smoothed first with their own kernel, h_j = h_over_d d_j (3.9), onto the SPH
+// particles, and that field is smoothed again with the fluid kernel (3.10).
+struct DoubleSmoothingSpec {
+  bool enabled = false;                  // false: the classic single smoothing (2.50)
+  std::vector<std::string> big_species;  // default: the species with the largest diameter
+  // h_b / d_big. The thesis takes h_b = 2 d_big with its kernel of support h (eq. 2.11),
+  // i.e. h_b/h_s = d_big/dx; with our support 2h and h_s = 1.5 dx that ratio is h_b = 1.5 d_big.
+  double h_over_d = 1.5;
+};
+
 struct Scene {
   std::string name = "scene";
   std::string description;
@@ -107,6 +118,7 @@ struct Scene {
   ContactSpec contact;
   drag::DragLaw drag = drag::Stokes{};
   double voidage_floor = 0.3;
+  DoubleSmoothingSpec double_smoothing;
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;

@@ -400,6 +400,14 @@ Scene parse(const YAML::Node& root, const std::string& file) {
                                    : ParticleGroupSpec::Kind::kRandom;
       if (g.kind == ParticleGroupSpec::Kind::kRandom) {
         read_mixture(r, sc, g);
+      } else if (g.kind == ParticleGroupSpec::Kind::kLattice && r.has("species") && r.child("species").IsSequence()) {
+        // a mixed lattice (bidisperse block, thesis §4.6): species dealt to the sites by quota, shuffled
+        read_mixture(r, sc, g);
+        for (std::size_t i = 0; i < g.mixture.size(); ++i)
+          if (!sc.species[sc.species_index(g.mixture[i])].monodisperse())
+            r.fail(fmt::format("{}.{}", r.key("species"), i),
+                   fmt::format("species '{}' has a size_distribution; a lattice needs species with one diameter",
+                               g.mixture[i]));
       } else {
         g.species = r.text("species", "");
         const int s = sc.species_index(g.species);
@@ -429,6 +437,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
         }
         if (g.kind == ParticleGroupSpec::Kind::kLattice) {
           g.voidage = r.number("voidage", g.voidage, 1.0 - M_PI / 6.0, 1.0, false, true);
+          if (g.mixture.size() > 1) g.seed = r.whole64("seed", 0, 0, std::numeric_limits<std::int64_t>::max());
         } else {
           // 1 - 0.64: no random packing is denser than random close packing. Random
           // sequential addition stops far earlier (random_packing.hpp) and says so.
@@ -497,6 +506,29 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   {
     MapReader r(top.child("coupling"), "coupling", file);
     sc.voidage_floor = r.number("voidage_floor", sc.voidage_floor, 0.05, 0.95);
+    const std::string sm = r.choice("voidage_smoothing", "single", {"single", "double"});
+    sc.double_smoothing.enabled = sm == "double";
+    if (sc.double_smoothing.enabled) {
+      sc.double_smoothing.h_over_d = r.number("big_h_over_d", sc.double_smoothing.h_over_d, 0.5, 5.0);
+      if (r.has("big_species")) {
+        const YAML::Node n = r.child("big_species");
+        if (!n.IsSequence() || n.size() == 0) r.fail(r.key("big_species"), "must be a non-empty list of species names");
+        for (std::size_t i = 0; i < n.size(); ++i) {
+          const std::string k = fmt::format("{}.{}", r.key("big_species"), i);
+          if (!n[i].IsScalar() || sc.species_index(n[i].Scalar()) < 0)
+            r.fail(k, "must be the name of a species listed under 'species'");
+          sc.double_smoothing.big_species.push_back(n[i].Scalar());
+        }
+      } else {  // default: the species with the largest diameter
+        std::size_t big = 0;
+        for (std::size_t i = 1; i < sc.species.size(); ++i)
+          if (sc.species[i].d_max() > sc.species[big].d_max()) big = i;
+        if (!sc.species.empty()) sc.double_smoothing.big_species = {sc.species[big].name};
+      }
+    } else {
+      for (const char* k : {"big_species", "big_h_over_d"})
+        if (r.has(k)) r.fail(r.key(k), "applies only with voidage_smoothing: double");
+    }
     r.finish();
   }
   {
@@ -661,7 +693,7 @@ std::string scene_to_yaml(const Scene& sc) {
     const bool single = g.kind == ParticleGroupSpec::Kind::kSingle;
     const bool random = g.kind == ParticleGroupSpec::Kind::kRandom;
     e << YAML::Key << "type" << YAML::Value << (single ? "single" : random ? "random" : "lattice");
-    if (random && g.mixture.size() > 1) {
+    if (g.mixture.size() > 1) {
       e << YAML::Key << "species" << YAML::Value << YAML::Flow << g.mixture;
       e << YAML::Key << "fractions" << YAML::Value << YAML::Flow << g.fractions;
     } else {
@@ -676,7 +708,7 @@ std::string scene_to_yaml(const Scene& sc) {
       e << YAML::Key << "max" << YAML::Value;
       vec(g.hi);
       e << YAML::Key << "voidage" << YAML::Value << g.voidage;
-      if (random) e << YAML::Key << "seed" << YAML::Value << g.seed;
+      if (random || g.mixture.size() > 1) e << YAML::Key << "seed" << YAML::Value << g.seed;
     }
     e << YAML::Key << "velocity" << YAML::Value;
     vec(g.velocity);
@@ -716,7 +748,12 @@ std::string scene_to_yaml(const Scene& sc) {
   e << YAML::Key << "drag" << YAML::Value << YAML::BeginMap << YAML::Key << "law" << YAML::Value
     << drag::drag_law_name(sc.drag) << YAML::EndMap;
   e << YAML::Key << "coupling" << YAML::Value << YAML::BeginMap << YAML::Key << "voidage_floor" << YAML::Value
-    << sc.voidage_floor << YAML::EndMap;
+    << sc.voidage_floor << YAML::Key << "voidage_smoothing" << YAML::Value
+    << (sc.double_smoothing.enabled ? "double" : "single");
+  if (sc.double_smoothing.enabled)
+    e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species << YAML::Key
+      << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;
+  e << YAML::EndMap;
   e << YAML::Key << "time" << YAML::Value << YAML::BeginMap << YAML::Key << "end" << YAML::Value << sc.time.end
     << YAML::Key << "cfl" << YAML::Value << sc.time.cfl << YAML::Key << "dem_steps_per_contact" << YAML::Value
     << sc.time.dem_steps_per_contact << YAML::Key << "max_dt_sph" << YAML::Value << sc.time.max_dt_sph << YAML::EndMap;

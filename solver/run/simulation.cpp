@@ -11,6 +11,7 @@
 #include "coupling/fluid_force.hpp"
 #include "coupling/interpolation.hpp"
 #include "coupling/reaction.hpp"
+#include "coupling/double_smoothing.hpp"
 #include "coupling/voidage.hpp"
 #include "dem/rotation.hpp"
 #include "domain/reorder.hpp"
@@ -98,6 +99,16 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
     }
   }
   dt_dem_max_ = std::min(t_contact_ / scene_.time.dem_steps_per_contact, 0.1 * t_drag);
+  if (scene_.double_smoothing.enabled) {  // (3.8-3.10)
+    is_big_species_.assign(scene_.species.size(), 0);
+    double d_big = 0.0;
+    for (const auto& name : scene_.double_smoothing.big_species) {
+      const int k = scene_.species_index(name);
+      is_big_species_[k] = 1;
+      d_big = std::max(d_big, scene_.species[k].d_max());
+    }
+    big_cutoff_ = kernel::kSupport * scene_.double_smoothing.h_over_d * d_big;
+  }
 
   n_groups_ = 0;
   for (std::size_t i = 0; i < dem_.size(); ++i) n_groups_ = std::max(n_groups_, dem_.rigid_group[i] + 1);
@@ -137,9 +148,12 @@ void Simulation::build_initial_state() {
     fluid_.inv_h[a] = 1.0 / fluid_.h[a];
     fluid_.eps[a] = 1.0;
   }
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a) {  // m/rho = dx^3 for the double smoothing (3.10)
+    fluid_.rho[a] = eos_.rho0;
+    fluid_.mass[a] = eos_.rho0 * dx3;
+  }
   rebuild_neighbours();
-  sphere_pairs_.build(fluid_, dem_, dem_cells_);
-  voidage_clamped_ = compute_fluid_voidage(fluid_, dem_, sphere_pairs_, scene_.voidage_floor);
+  compute_voidage();
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
     const double P = eos_.rho0 * g * (H - fluid_.z[a]);
     fluid_.rho[a] = eos_.density(P, fluid_.eps[a]);
@@ -190,7 +204,10 @@ void Simulation::rebuild_contact_neighbours() {
   const double skin = scene_.contact.skin * 2.0 * rmax;
   const double contact_cut = 2.0 * rmax + skin;
   s.resize(s.n_owned);
-  dem_halo_.build(box, std::max(cell_size_, contact_cut), s.x.data(), s.y.data(), s.z.data(), s.n_owned);
+  // (the big spheres' own kernel of the double smoothing reaches further, plus the skin
+  // they may move before the next rebuild)
+  const double halo = std::max({cell_size_, contact_cut, big_cutoff_ > 0 ? big_cutoff_ + skin : 0.0});
+  dem_halo_.build(box, halo, s.x.data(), s.y.data(), s.z.data(), s.n_owned);
   s.resize(s.n_owned + dem_halo_.n_ghost());
   dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
   for (auto* v : {&s.vx, &s.vy, &s.vz, &s.radius, &s.mass}) dem_halo_.fill(*v);
@@ -203,6 +220,26 @@ void Simulation::rebuild_contact_neighbours() {
     contacts_.build(s, contact_cells_, skin);
   }
   if (rotation_) contact_history_.load(s, contacts_);
+}
+
+// The fluid-sphere pairs of this step and the voidage (2.50), or with double smoothing
+// the small spheres' part (3.8) plus the big spheres smoothed apart (3.9) and again
+// with the fluid kernel (3.10).
+void Simulation::compute_voidage() {
+  FluidParticles& f = fluid_;
+  const DemParticles& s = dem_;
+  sphere_pairs_.build(f, s, dem_cells_);
+  if (!scene_.double_smoothing.enabled) {
+    voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, scene_.voidage_floor);
+    return;
+  }
+  big_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), big_cutoff_);
+  smooth_big_spheres(f, s, big_cells_, is_big_species_, scene_.double_smoothing.h_over_d, big_fraction_);
+  fluid_halo_.fill(big_fraction_.phi);
+  fluid_halo_.fill(big_fraction_.phi_over_d);
+  resmooth_with_fluid_kernel(f, fluid_cells_, big_fraction_, big_solid_, big_solid_over_d_);
+  const BigSpheresSmoothedApart big{is_big_species_, big_solid_, big_solid_over_d_};
+  voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, scene_.voidage_floor, &big);
 }
 
 void Simulation::update_smoothing_length() {
@@ -244,8 +281,7 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   Lap lap{timers_};
   update_smoothing_length();
   if (fluid_cutoff() > cell_size_) rebuild_neighbours();  // h outgrew the bins (margin 5 %)
-  sphere_pairs_.build(f, s, dem_cells_);
-  voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, scene_.voidage_floor);
+  compute_voidage();
   fluid_halo_.fill(f.eps);
   lap(kVoidage);
   update_pressure();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling/double_smoothing.hpp"
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "coupling/voidage_grid.hpp"
 #include "dem/contact_forces.hpp"
@@ -97,6 +98,7 @@ class Simulation {
   void rebuild_neighbours();
   void rebuild_contact_neighbours();
   void update_smoothing_length();
+  void compute_voidage();
   void update_pressure();
   void compute_fluid_side(bool hold_spheres);
   void dem_half(double dt, bool first_half);
@@ -115,6 +117,12 @@ class Simulation {
   NeighbourList fluid_pairs_;  // fluid-fluid pairs within the cell size, each owned pair once
   PairAccumulator pair_scratch_;
   FluidSpherePairs sphere_pairs_;  // fluid-sphere pairs of the step with their kernel values
+  // double smoothing of the big species (3.8-3.10); big_cutoff_ = 0 when off
+  std::vector<std::uint8_t> is_big_species_;
+  double big_cutoff_ = 0.0;
+  CellList big_cells_;
+  BigSphereFraction big_fraction_;
+  std::vector<double> big_solid_, big_solid_over_d_;
   PairAccumulator sphere_scratch_;
   ContactNeighbourList contacts_;
   ContactLaw contact_law_;

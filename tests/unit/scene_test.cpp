@@ -848,10 +848,12 @@ TEST(SceneRandomGroup, Errors) {
   error_of(group("species: glass, position: [0, 0, 0]"), {"'particles.0.position'", "unknown key"});
   error_of(group("species: glass, min: [0, 0, 0.002], max: [0.004, 0.004, 0.001]"),
            {"'particles.0.max'", "min < max"});
-  // seed and fractions belong to random groups only.
+  // seed and fractions belong to random groups and mixed lattices only.
   error_of(head + "  - {type: lattice, species: glass, seed: 1}\n", {"'particles.0.seed'", "unknown key"});
   error_of(head + "  - {type: lattice, species: glass, fractions: [1]}\n", {"'particles.0.fractions'", "unknown"});
-  error_of(head + "  - {type: lattice, species: [glass]}\n", {"'particles.0.species'", "a string"});
+  error_of(head + "  - {type: lattice, species: [glass, light]}\n", {"'particles.0.fractions'", "required"});
+  error_of(head + "  - {type: lattice, species: [glass, light], fractions: [0.5, 0.5], seed: 1.5}\n",
+           {"'particles.0.seed'", "whole number"});
 }
 
 TEST(SceneRandomGroup, KynchLineFromTheSuspension) {
@@ -946,4 +948,25 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
     EXPECT_TRUE(contains(readme, "`" + p.filename().string() + "`")) << "cases/README.md does not list " << p;
   for (const auto& c : RunLog::columns({SpeciesSpec{"NAME", 1e-4, 2500, {}}}))
     EXPECT_TRUE(contains(readme, "`" + c + "`")) << "cases/README.md does not list log column " << c;
+}
+
+// coupling.voidage_smoothing: the double smoothing keys only with `double`, names checked.
+TEST(SceneCoupling, DoubleSmoothingKeys) {
+  const std::string two = "species: [{name: big, diameter: 2.0e-4, density: 2500}, "
+                          "{name: small, diameter: 1.0e-4, density: 2500}]\n";
+  const Scene d = load_scene_text(two, kFile, {"coupling.voidage_smoothing=double"});
+  EXPECT_TRUE(d.double_smoothing.enabled);
+  EXPECT_EQ(d.double_smoothing.big_species, std::vector<std::string>{"big"});  // the largest by default
+  EXPECT_EQ(d.double_smoothing.h_over_d, 1.5);
+  EXPECT_FALSE(load_scene_text(two, kFile).double_smoothing.enabled);
+  error_of(two, {"coupling.voidage_smoothing=triple"}, {"'coupling.voidage_smoothing'", "single", "double"});
+  error_of(two, {"coupling.big_h_over_d=2"}, {"'coupling.big_h_over_d'", "voidage_smoothing: double"});
+  error_of(two, {"coupling.voidage_smoothing=double", "coupling.big_species=[huge]"},
+           {"'coupling.big_species.0'", "species"});
+  error_of(two, {"coupling.voidage_smoothing=double", "coupling.big_h_over_d=9"}, {"'coupling.big_h_over_d'", "[0.5, 5]"});
+  const Scene back = load_scene_text(scene_to_yaml(load_scene_text(two, kFile, {"coupling.voidage_smoothing=double",
+                                                                                "coupling.big_h_over_d=2"})),
+                                     kFile);
+  EXPECT_TRUE(back.double_smoothing.enabled);
+  EXPECT_EQ(back.double_smoothing.h_over_d, 2.0);
 }
