@@ -1,7 +1,12 @@
 # script-version: 2
-"""com_tracks: centre of mass (height) of each species and of all spheres over time.
-DIR/insitu/com.csv: time, com_z:S for each species S, com_z:all (m), mass-weighted,
-summed over MPI ranks."""
+"""com_tracks: centre of mass (height) of each species and of all spheres over time,
+each species' mean vertical velocity and the height of its suspension front.
+DIR/insitu/com.csv: time, com_z:S for each species S, com_z:all (m), mass-weighted;
+vz_mean:S (m/s), mass-weighted; front_z:S (m), the height where the species' solid
+fraction, binned in FRONT_BINS layers over the box height, falls to half its value in
+the initial suspension (the median of the occupied layers at the first analysis): the
+per-species interface of a suspension of two densities or sizes (Kynch), which the
+voidage profile cannot tell apart. All sums over MPI ranks."""
 import os
 import sys
 
@@ -17,30 +22,61 @@ options = catalyst.Options()
 options.GlobalTrigger = "TimeStep"
 
 state = {}
+FRONT_BINS = 60
+
+
+def front_height(frac, c0, z_lo, dz):
+    """Highest height where frac (per layer, bottom first) still reaches c0 / 2,
+    interpolated linearly between the centres of the layer and the one above."""
+    above = np.nonzero(frac >= 0.5 * c0)[0]
+    if c0 <= 0 or above.size == 0:
+        return float("nan")
+    k = above[-1]
+    zc = z_lo + (k + 0.5) * dz
+    if k + 1 >= frac.size:
+        return zc
+    f0, f1 = frac[k], frac[k + 1]
+    return zc + dz * (f0 - 0.5 * c0) / (f0 - f1)
 
 
 def catalyst_execute(info):
     data = si.local_data(particles, info.time)
     names = si.species_names(data)
     ns = len(names)
-    sums = np.zeros(2 * ns)  # [sum m z per species, sum m per species]
+    box = si.field(data, "box")  # field data travels with every rank's piece, empty or not
+    nb = FRONT_BINS
+    # [sum m z, sum m, sum m vz per species, solid volume per species and layer]
+    sums = np.zeros(3 * ns + ns * nb)
     if data.GetNumberOfPoints() > 0:
         pts = np.asarray(data.Points)
         d = np.asarray(data.PointData["diameter"])
-        m = np.asarray(data.PointData["density"]) * np.pi * d ** 3 / 6.0
+        vol = np.pi * d ** 3 / 6.0
+        m = np.asarray(data.PointData["density"]) * vol
+        vz = np.asarray(data.PointData["velocity"])[:, 2]
         sp = np.asarray(data.PointData["species"]).astype(int)
         sums[:ns] = np.bincount(sp, weights=m * pts[:, 2], minlength=ns)
-        sums[ns:] = np.bincount(sp, weights=m, minlength=ns)
+        sums[ns:2 * ns] = np.bincount(sp, weights=m, minlength=ns)
+        sums[2 * ns:3 * ns] = np.bincount(sp, weights=m * vz, minlength=ns)
+        layer = np.clip(((pts[:, 2] - box[4]) / (box[5] - box[4]) * nb).astype(int), 0, nb - 1)
+        sums[3 * ns:] = np.bincount(sp * nb + layer, weights=vol, minlength=ns * nb)
     sums = si.allreduce_sum(sums)
     if si.RANK != 0:
         return
-    mz, mass = sums[:ns], sums[ns:]
+    mz, mass, mvz = sums[:ns], sums[ns:2 * ns], sums[2 * ns:3 * ns]
     com = [mz[k] / mass[k] if mass[k] > 0 else float("nan") for k in range(ns)]
+    vz_mean = [mvz[k] / mass[k] if mass[k] > 0 else float("nan") for k in range(ns)]
     com_all = mz.sum() / mass.sum() if mass.sum() > 0 else float("nan")
+    dz = (box[5] - box[4]) / nb
+    frac = sums[3 * ns:].reshape(ns, nb) / ((box[1] - box[0]) * (box[3] - box[2]) * dz)
+    if "c0" not in state:
+        state["c0"] = [float(np.median(frac[k][frac[k] > 0])) if np.any(frac[k] > 0) else 0.0 for k in range(ns)]
+    fronts = [front_height(frac[k], state["c0"][k], box[4], dz) for k in range(ns)]
     path = os.path.join(si.OUT, "com.csv")
     new = "header" not in state
     with open(path, "w" if new else "a") as f:
         if new:
-            f.write(",".join(["time"] + ["com_z:" + n for n in names] + ["com_z:all"]) + "\n")
+            f.write(",".join(["time"] + ["com_z:" + n for n in names] + ["com_z:all"] +
+                             ["vz_mean:" + n for n in names] + ["front_z:" + n for n in names]) + "\n")
             state["header"] = True
-        f.write(",".join(["%.17g" % info.time] + ["%.17g" % c for c in com] + ["%.17g" % com_all]) + "\n")
+        f.write(",".join(["%.17g" % info.time] + ["%.17g" % c for c in com] + ["%.17g" % com_all] +
+                         ["%.17g" % v for v in vz_mean] + ["%.17g" % z for z in fronts]) + "\n")

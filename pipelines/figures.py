@@ -9,7 +9,7 @@ DIR is a run directory, finished or interrupted. The script reads DIR/insitu/:
                       voidage (nt, nz); optional file attributes
                       reference_interface_velocity [m/s], column_height [m]
   interfaces.csv      time,z_top,z_bottom            [s, m, m]; nan = not found
-  com.csv             time,com_z:S1,...,com_z:all    [s, m]
+  com.csv             time,com_z:S1,...,com_z:all,vz_mean:S..,front_z:S..    [s, m, m/s]
 
 and writes DIR/figures/:
 

@@ -50,4 +50,35 @@ inline double di_felice_block_slip(double d, double rho_p, double rho_f, double 
   return bisect(balance, 1e-9, 10.0);
 }
 
+// Beetstra, van der Hoef & Kuipers (2007) monodisperse drag factor (thesis 2.85-2.86),
+// F = f_mono 3 pi mu d u_s, at voidage eps and Reynolds number Re = rho_f d |u_s| / mu.
+inline double beetstra_f_mono(double eps, double re) {
+  const double phi = 1.0 - eps;
+  const double stokes = 10.0 * phi / (eps * eps) + eps * eps * (1.0 + 1.5 * std::sqrt(phi));
+  const double inertial = 0.413 * re / (24.0 * eps * eps) * (1.0 / eps + 3.0 * eps * phi + 8.4 * std::pow(re, -0.343)) /
+                          (1.0 + std::pow(10.0, 3.0 * phi) * std::pow(re, -(1.0 + 4.0 * phi) / 2.0));
+  return stokes + inertial;
+}
+
+// Terminal superficial slip of a bidisperse constant-porosity block (thesis eq. 4.5):
+//   u_T = (rho_p - rho_f) g <d>^2 / (18 mu [f_mono(eps, <Re>)/eps + (Sigma - 1)/eps^2]),
+//   Sigma = sum_i x_i / y_i^2,  y_i = d_i / <d>,  <d> = 1 / sum_i (x_i / d_i) (Sauter),
+// x_i the volume fractions (from the number fractions n_i: x_i ~ n_i d_i^3). It is the
+// block's force balance, sum_i N_i eps (rho_p - rho_f) V_i g = sum_i N_i F_i, with
+// F_i = beta_i f_mono 3 pi mu d_i u of (2.88): sum_i x_i/y_i = 1 collapses the sum to (4.5).
+inline double bidisperse_block_slip(double d1, double d2, double n1, double rho_p, double rho_f, double mu, double g,
+                                    double eps) {
+  const double n2 = 1.0 - n1;
+  const double v1 = n1 * d1 * d1 * d1, v2 = n2 * d2 * d2 * d2;
+  const double x1 = v1 / (v1 + v2), x2 = v2 / (v1 + v2);
+  const double dm = 1.0 / (x1 / d1 + x2 / d2);
+  const double y1 = d1 / dm, y2 = d2 / dm;
+  const double sigma = x1 / (y1 * y1) + x2 / (y2 * y2);
+  auto residual = [&](double u) {
+    const double re = rho_f * dm * u / mu;
+    return u - (rho_p - rho_f) * g * dm * dm / (18.0 * mu * (beetstra_f_mono(eps, re) / eps + (sigma - 1.0) / (eps * eps)));
+  };
+  return bisect(residual, 1e-9, 1.0);
+}
+
 }  // namespace sphdem::theory
