@@ -1,5 +1,6 @@
 // The observables of a settling column (Zhao, Houlsby & Utili 2014) against closed forms:
-// the excess pore pressure at the base of water at rest, the contact-force network of
+// the excess pore pressure at the base as a first-layer mean (water at rest: in
+// hydrostatic_test.cpp), the contact-force network of
 // spheres at rest (F_n = k delta, each pair once, periodic images), the size
 // distribution of the thirds, and the bulk density rho_b = eps rho_f + (1 - eps) rho_s.
 #include <gtest/gtest.h>
@@ -17,13 +18,6 @@
 using namespace sphdem;
 
 namespace {
-const char* kColumn = R"(
-name: column
-domain: {size: [0.0016, 0.0016, 0.006]}
-fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4}
-startup: {relax_steps: 0}
-)";
-
 // Spheres at rest, d = 100 um, k = 10 N/m, no dashpot: A on the wall (overlap 10 um),
 // B on A (10 um; the loader refuses a sphere cutting the wall, so A and B are placed
 // 10 um higher and moved down), C and D touching across the periodic face x = 0 (20 um).
@@ -53,21 +47,6 @@ DemParticles spheres(const std::vector<double>& z, const std::vector<double>& d)
   return s;
 }
 }  // namespace
-
-TEST(ExcessPorePressure, WaterAtRestHasNone) {
-  const Scene sc = load_scene_text(kColumn, "column.yaml");
-  Simulation sim(sc);
-  // the hydrostatic start is P = rho_f g (H - z) exactly
-  EXPECT_LT(std::abs(sim.diagnostics().excess_pore_pressure_base), 1e-12);
-  const double period = 4.0 * sc.fill_height() / sc.fluid.sound_speed;
-  double worst = 0;
-  while (sim.time() < 1.5 * period) {
-    sim.step();
-    worst = std::max(worst, std::abs(sim.diagnostics().excess_pore_pressure_base));
-  }
-  std::printf("water at rest over 1.5 acoustic periods: max |u_base| / (rho_f g H) = %.2e\n", worst);
-  EXPECT_LT(worst, 0.01);  // physics.md §1: the column at rest keeps its pressure within 1 %
-}
 
 TEST(ExcessPorePressure, IsTheMeanOverTheFirstLayer) {
   FluidParticles f;
