@@ -121,6 +121,14 @@ class SandColumn : public ::testing::Test {
 };
 SandColumnRun SandColumn::run_;
 
+// Measured when written (seed 2014, 1 thread): this FAILS. The period mean follows eq. 15
+// while the suspension settles (0.138 at 10 ms, 0.185 at 20 ms against 0.1815) but goes
+// on rising as the layer at the wall forms (0.39 at 50 ms, 0.79 at 0.15 s; raw values
+// from -2.3 to 4.6) instead of dissipating: the base carries more than the whole
+// suspension's weight. Higher in the column the excess is linear in z as Zhao's
+// isochrones. The wall particles' pressure stays below the first fluid layer's (by
+// ~0.4 rho_f g H at 0.1 s), and the layer on the wall never comes to rest (see
+// BedBulkDensityReported). The tolerance is the issue's; the defect is the solver's.
 TEST_F(SandColumn, PeakExcessPorePressureAtTheBaseMatchesEq15) {
   const SandColumnRun& r = run_;
   const double raw_max = *std::max_element(r.base.u.begin(), r.base.u.end());
