@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "run/run_log.hpp"
+#include "run/sediment_output.hpp"
 #include "run/simulation.hpp"
 
 namespace sphdem {
@@ -91,6 +92,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
            << std::flush;
     }
   }
+  write_sediment_output(sim, opt.out_dir);
   RunSummary r;
   r.steps = sim.step_count();
   r.step_seconds = step_seconds;

@@ -16,6 +16,7 @@
 #include "dem/rotation.hpp"
 #include "domain/reorder.hpp"
 #include "run/initial_state.hpp"
+#include "run/pore_pressure.hpp"
 #include "sph/density_rate.hpp"
 #include "sph/kernel.hpp"
 #include "sph/momentum.hpp"
@@ -587,6 +588,8 @@ Diagnostics Simulation::diagnostics() const {
   d.dt_dem = dt_dem_;
   d.voidage_clamped = voidage_clamped_;
   d.omega_bounded = omega_bounded_;
+  d.excess_pore_pressure_base = excess_pore_pressure_base(
+      f, BasePorePressure{eos_.rho0, std::abs(scene_.gravity[2]), scene_.fill_height(), scene_.fluid.spacing});
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     if (f.kind[a] != kFluid) continue;
     d.fluid_mass += f.mass[a];

@@ -35,6 +35,7 @@ struct Diagnostics {
   double max_overlap_over_d = 0;
   double max_density_error = 0;  // max |rho/(eps rho0) - 1| over mobile fluid
   std::size_t voidage_clamped = 0, omega_bounded = 0;
+  double excess_pore_pressure_base = 0;  // run/pore_pressure.hpp: u_base / (rho_f |g| H)
   std::vector<double> vz_mean, slip_z_mean, com_z;  // per species
   std::vector<std::size_t> count;                    // spheres per species
 };
@@ -84,6 +85,8 @@ class Simulation {
 
   // The voidage on a regular grid (analysis), with the solver's kernel at length h.
   std::vector<double> voidage_on_grid(const GridSpec& grid, double h) const;
+  // The contact neighbour list of the last build (every pair within the skin; analysis).
+  const ContactNeighbourList& contact_list() const { return contacts_; }
   // Number of touching neighbours (spheres and the wall) of each owned sphere.
   std::vector<int> contact_counts() const;
 

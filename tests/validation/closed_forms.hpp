@@ -81,4 +81,13 @@ inline double bidisperse_block_slip(double d1, double d2, double n1, double rho_
   return bisect(residual, 1e-9, 1.0);
 }
 
+// Peak excess pore pressure at the base of a settling suspension, normalised by the
+// hydrostatic pressure rho_f g H (Zhao, Houlsby & Utili 2014, eq. 15): once the whole
+// suspension of porosity n filling the column is carried by the fluid, the base carries
+// its total weight, (n rho_f + (1 - n) rho_s) g H, so
+//   u_max / (rho_f g H) = (1 - n)(rho_s / rho_f - 1).
+inline double peak_excess_pore_pressure(double porosity, double rho_s, double rho_f) {
+  return (1.0 - porosity) * (rho_s / rho_f - 1.0);
+}
+
 }  // namespace sphdem::theory

@@ -1,0 +1,19 @@
+#include "run/pore_pressure.hpp"
+
+#include <limits>
+
+namespace sphdem {
+
+double excess_pore_pressure_base(const FluidParticles& f, const BasePorePressure& b) {
+  const double p0 = b.rho_f * b.g * b.H;
+  double sum = 0.0;
+  long n = 0;
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    if (f.kind[a] != kFluid || f.z[a] >= b.dx) continue;
+    sum += (f.P[a] - b.rho_f * b.g * (b.H - f.z[a])) / p0;
+    ++n;
+  }
+  return n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace sphdem
