@@ -264,7 +264,8 @@ class BlockMonodisperse:
             w = 0.002 if mode == "reduced" else 0.004
             out.append(Run(f"block_eps{eps}_tall", self.case,
                            dict(self._sets(mode), **{"particles.0.voidage": eps, "particles.0.min": "[0,0,0.001]",
-                                                     "particles.0.max": f"[{w},{w},0.005]"})))
+                                                     "particles.0.max": f"[{w},{w},0.005]",
+                                                     "contact.stiffness": 0.01})))
         for hd in self.SWEEP[mode]:
             out.append(Run(f"block_sweep_hd{hd:g}", self.case, self._sets(mode, self.SWEEP_WIDTH, hd)))
         return out
@@ -467,8 +468,12 @@ class SuspensionMonodisperse:
                      f"({nper} × 4H/c0, {sel.sum()} analyses)")
                 rows.append(Row(self.name, q, f"{u_k * 1e3:.4g} mm/s", f"Kynch: hindered settling (4.4) at ε0 = {eps0:g}",
                                 f"{u_sim * 1e3:.4g} mm/s", u_sim / u_k - 1, self.TARGET, r))
+                # informative: (4.4) and R-Z/G&A-D differ by ~8 % at eps = 0.9 by themselves
+                # (they are two empirical fits), and the solver implements Di Felice's law,
+                # so a pass/fail here would judge the drag law, not the solver.
                 rows.append(Row(self.name, "interface velocity (as above)", f"{u_rz * 1e3:.4g} mm/s", rz_src,
-                                f"{u_sim * 1e3:.4g} mm/s", u_sim / u_rz - 1, self.TARGET, r))
+                                f"{u_sim * 1e3:.4g} mm/s", u_sim / u_rz - 1, None, r,
+                                note=f"second reference; (4.4) is {100 * (u_k / u_rz - 1):+.1f} % from it"))
                 fig, ax = plt.subplots(figsize=(6, 4))
                 ax.plot(ti * 1e3, zt * 1e3, "o", ms=3, label="sphdem z_top (in situ)")
                 zb = r.interfaces["z_bottom"]
