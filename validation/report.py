@@ -1,0 +1,734 @@
+#!/usr/bin/python3
+"""Validation report of sphdem: every scene against its closed-form reference (issue 4).
+
+    /usr/bin/python3 validation/report.py --mode reduced --build build --out build/validation
+    /usr/bin/python3 validation/report.py --mode full    --build build --out validation
+
+Each scene of the registry (SCENES, at the end of the scene classes) names its runs (a
+case file and the --set overrides of each mode), runs them with `BUILD/app/sphdem run`,
+reads log.csv, case.yaml and, when the in-situ analysis ran, insitu/interfaces.csv, and
+compares with the references of theory.py. The rows go to OUT/VALIDATION.md (with the
+command, date, machine, commit and wall times) and the figures to OUT/figures/.
+Exit code 0 when every row with a target meets it, 1 otherwise (also when a run fails).
+"""
+import argparse
+import csv
+import datetime
+import json
+import math
+import os
+import platform
+import shlex
+import subprocess
+import sys
+import time
+
+import numpy as np
+import yaml
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+import theory  # noqa: E402
+
+
+# ----------------------------------------------------------------------------------------
+# Runs and their outputs
+# ----------------------------------------------------------------------------------------
+class Run:
+    """One `sphdem run`: a case file, --set overrides, with or without in-situ analysis."""
+
+    def __init__(self, key, case, sets, insitu=False):
+        self.key, self.case, self.sets, self.insitu = key, case, dict(sets), insitu
+        if insitu:
+            # only the reduced data the report reads: no rendering, so no Xvfb needed
+            self.sets.setdefault("insitu.pipelines", "[voidage_height, interfaces]")
+
+    def command(self, sphdem, out_dir):
+        cmd = [sphdem, "run", os.path.join(REPO, self.case), "--out", out_dir]
+        for k, v in self.sets.items():
+            cmd += ["--set", f"{k}={v}"]
+        if not self.insitu:
+            cmd.append("--no-insitu")
+        return cmd
+
+
+class RunResult:
+    def __init__(self, run, out_dir, wall, returncode, cmd):
+        self.run, self.dir, self.wall, self.returncode, self.cmd = run, out_dir, wall, returncode, cmd
+        self.ok = returncode == 0
+        self.log = read_csv(os.path.join(out_dir, "log.csv"))
+        case_path = os.path.join(out_dir, "case.yaml")
+        self.case = yaml.safe_load(open(case_path)) if os.path.exists(case_path) else None
+        self.interfaces = read_csv(os.path.join(out_dir, "insitu", "interfaces.csv"))
+
+    # resolved scene numbers
+    def species(self, i=0):
+        return self.case["species"][i]
+
+    def resolution(self):
+        d = self.species()["diameter"]
+        dx = self.case["fluid"]["spacing"]
+        return f"h/d = {dx / d:.3g} (dx = {dx * 1e6:.0f} µm)"
+
+    def hd(self):
+        return self.case["fluid"]["spacing"] / self.species()["diameter"]
+
+    def fluid(self):
+        f = self.case["fluid"]
+        return f["density"], f["viscosity"]
+
+    def g(self):
+        return abs(self.case["gravity"][2])
+
+    def acoustic_period(self):
+        f = self.case["fluid"]
+        return theory.acoustic_period(f["fill_height"], f["sound_speed"])
+
+
+def read_csv(path):
+    """Columns of a CSV file as numpy arrays (None if the file is missing or empty)."""
+    if not os.path.exists(path):
+        return None
+    with open(path) as fh:
+        rows = list(csv.reader(fh))
+    if len(rows) < 2:
+        return None
+    head, body = rows[0], rows[1:]
+    return {h: np.array([float(r[i]) for r in body]) for i, h in enumerate(head)}
+
+
+def execute(run, sphdem, runs_dir, reuse, nice):
+    out_dir = os.path.join(runs_dir, run.key)
+    cmd = run.command(sphdem, out_dir)
+    stamp = os.path.join(out_dir, "report_run.json")
+    if reuse and os.path.exists(stamp):
+        meta = json.load(open(stamp))
+        if meta.get("cmd") == cmd:
+            print(f"[report] reuse {run.key} ({meta['wall']:.1f} s)", flush=True)
+            return RunResult(run, out_dir, meta["wall"], meta["returncode"], cmd)
+    os.makedirs(out_dir, exist_ok=True)
+    full = (["nice", "-n", str(nice)] if nice else []) + cmd
+    print(f"[report] run {run.key}: {' '.join(shlex.quote(c) for c in cmd)}", flush=True)
+    t0 = time.perf_counter()
+    with open(os.path.join(out_dir, "sphdem.out"), "w") as fh:
+        rc = subprocess.call(full, stdout=fh, stderr=subprocess.STDOUT)
+    wall = time.perf_counter() - t0
+    json.dump({"cmd": cmd, "wall": wall, "returncode": rc}, open(stamp, "w"))
+    print(f"[report]   {run.key}: exit {rc}, {wall:.1f} s", flush=True)
+    return RunResult(run, out_dir, wall, rc, cmd)
+
+
+# ----------------------------------------------------------------------------------------
+# Rows
+# ----------------------------------------------------------------------------------------
+class Row:
+    """One line of the report. error is relative (sim/ref - 1) unless the quantity says;
+    target is the largest |error| allowed, None for a row that only informs."""
+
+    def __init__(self, scene, quantity, reference, source, simulated, error, target,
+                 result=None, note="", skip=None, ratio=False):
+        self.scene, self.quantity, self.reference, self.source = scene, quantity, reference, source
+        self.simulated, self.error, self.target, self.note = simulated, error, target, note
+        self.resolution = result.resolution() if result is not None and result.case else "–"
+        self.wall = result.wall if result is not None else None
+        self.skip = skip
+        self.ratio = ratio   # error is simulated / limit (shown as a ratio, passes when <= target)
+        if skip:
+            self.status = "SKIP"
+        elif error is None or not math.isfinite(error):
+            self.status = "FAIL" if target is not None else "INFO"
+        elif target is None:
+            self.status = "INFO"
+        else:
+            self.status = "PASS" if abs(error) <= target else "FAIL"
+
+
+def failed_run_rows(scene, result, what):
+    return [Row(scene, what, "–", "–", f"run failed (exit {result.returncode}, see {result.dir}/sphdem.out)",
+                None, 0.0, result)]
+
+
+def time_average(t, y, t0, t1):
+    """Trapezoidal mean of y(t) over [t0, t1] (y linearly interpolated at the ends)."""
+    ts = np.concatenate(([t0], t[(t > t0) & (t < t1)], [t1]))
+    ys = np.interp(ts, t, y)
+    return np.trapz(ys, ts) / (t1 - t0)
+
+
+# ----------------------------------------------------------------------------------------
+# Scenes. A scene: name, runs(mode) -> [Run], evaluate(results, ctx) -> [Row].
+# ----------------------------------------------------------------------------------------
+class SingleParticle:
+    """Thesis §4.4: one sphere from rest in still water against the Stokes transient (4.1)."""
+    name = "single_particle"
+    case = "cases/single_particle.yaml"
+    TARGET_TRANSIENT = 0.01   # issue 4: Stokes transient (4.1) under 1 %
+    TARGET_SLIP = 0.01        # issue 4: 1 % (the drag sees the slip)
+    TARGET_V_END = 0.03       # issue 2: terminal speed within 3 % (see the note of the row)
+
+    def runs(self, mode):
+        # 4 mm box kept in both modes: a periodic box of 2 mm would slow the sphere by
+        # its images (Hasimoto: 1.76 phi^(1/3) ~ 5 %).
+        sets = {"time.end": 0.008 if mode == "reduced" else 0.0125, "output.log_interval": 1e-4}
+        return [Run("single_particle", self.case, sets)]
+
+    def evaluate(self, results, ctx):
+        r = results["single_particle"]
+        if not r.ok or r.log is None:
+            return failed_run_rows(self.name, r, "v(t)")
+        sp = r.species()
+        rho_f, mu = r.fluid()
+        st = theory.StokesTransient(sp["diameter"], sp["density"], rho_f, mu, r.g())
+        name = sp["name"]
+        t, v, slip = r.log["time"], -r.log[f"vz_mean:{name}"], r.log[f"slip_z_mean:{name}"]
+        ref = np.array([st.speed(x) for x in t])
+        dev = (v - ref) / st.v_terminal
+        early = t <= 3 * st.t_relax
+        i = int(np.argmax(np.abs(dev[early])))
+        rows = [
+            Row(self.name, "v(t), t ≤ 3 t_d: max |v − v₄.₁| / v_T",
+                f"0 (v_T = {st.v_terminal * 1e3:.4g} mm/s, t_d = {st.t_relax * 1e3:.4g} ms)", "Stokes transient (4.1)",
+                f"{100 * abs(dev[early][i]):.2f} % at t = {t[early][i] * 1e3:.2f} ms", abs(dev[early][i]),
+                self.TARGET_TRANSIENT, r),
+            Row(self.name, f"superficial slip at t = {t[-1] * 1e3:.3g} ms ({t[-1] / st.t_relax:.1f} t_d)",
+                f"{ref[-1] * 1e3:.4g} mm/s", "Stokes transient (4.1) at that time (drag sees the slip)",
+                f"{slip[-1] * 1e3:.4g} mm/s", slip[-1] / ref[-1] - 1, self.TARGET_SLIP, r),
+            Row(self.name, f"sphere speed v at t = {t[-1] * 1e3:.3g} ms",
+                f"{ref[-1] * 1e3:.4g} mm/s", "Stokes transient (4.1)",
+                f"{v[-1] * 1e3:.4g} mm/s", v[-1] / ref[-1] - 1, self.TARGET_V_END, r,
+                note="v exceeds the slip by the fluid the sphere's own reaction drags along "
+                     "(self-induced velocity of unresolved coupling); target of issue 2"),
+        ]
+        fig, ax = plt.subplots(figsize=(6, 4))
+        tt = np.linspace(0, t[-1], 400)
+        ax.plot(tt * 1e3, [st.speed(x) * 1e3 for x in tt], "k-", label="Stokes transient (4.1)")
+        ax.plot(t * 1e3, v * 1e3, "o", ms=3, label="sphdem: sphere speed −v_z")
+        ax.plot(t * 1e3, slip * 1e3, "x", ms=3, label="sphdem: superficial slip")
+        ax.axvline(3 * st.t_relax * 1e3, color="grey", ls=":", label="3 t_d")
+        ax.set_xlabel("t (ms)")
+        ax.set_ylabel("speed (mm/s)")
+        ax.set_title(f"single sphere, {r.resolution()}")
+        ax.legend()
+        ctx.save(fig, "single_particle_vt.png")
+        return rows
+
+
+class BlockMonodisperse:
+    """Thesis §4.5: rigid block at constant voidage against the Di Felice slip (4.4), and
+    the error-versus-h/d curve. The slip is averaged over whole acoustic periods 4H/c0
+    of the column after the start-up transient, as tests/validation/block_validation.cpp."""
+    name = "block_monodisperse"
+    case = "cases/block_monodisperse.yaml"
+    TARGET = 0.04            # issue 4: under 4 % at h/d = 2
+    # h/d sweep: every spacing must divide the periodic width and the width must hold
+    # 4.8 sigma dx, so the sweep runs in a 4.8 mm box (4.8 mm / dx = 32, 24, 16, 12, 8).
+    SWEEP_WIDTH = 0.0048
+    SWEEP = {"reduced": (4, 6), "full": (1.5, 2, 3, 4, 6)}   # reduced: the two cheap points
+    THESIS_ERROR = {2: 0.043, 6: 0.14}   # physics.md §5
+    STARTUP = 0.003
+
+    def _sets(self, mode, width=None, hd=None):
+        s = {"output.log_interval": 1e-4}
+        if mode == "reduced":
+            # 2 mm periodic width (the block is laterally infinite either way), 16 ms as
+            # block_validation.cpp, and a contact stiffness of 0.01 N/m: the rigid lattice
+            # (spacing 1.7 d, 0.4 mm above the wall at the end) has no contact, so k only
+            # sets the DEM sub-step; with t_c = 0.8 ms there is one sub-step per half SPH
+            # step, which re-evaluates the drag (relaxation ~1 ms, 50 SPH steps).
+            width = width or 0.002
+            s.update({"time.end": 0.016, "contact.stiffness": 0.01})
+        if hd:
+            # the sweep in both modes: same reason as above (no contact in a rigid
+            # lattice); at h/d = 6 the case's k = 10 N/m would cost 50 sub-steps per step.
+            # Checked: at eps = 0.9 the mean slip with 5 sub-steps per t_c at k = 10 N/m
+            # and with k = 0.01 N/m agree to 1e-5.
+            s["contact.stiffness"] = 0.01
+        if width:
+            s["domain.size"] = f"[{width},{width},0.006]"
+            s["particles.0.max"] = f"[{width},{width},0.0045]"
+        if hd:
+            s["fluid.spacing"] = f"{hd * 1e-4:.6g}"
+        return s
+
+    def runs(self, mode):
+        out = [Run("block_eps0.9", self.case, self._sets(mode)),
+               Run("block_eps0.8", self.case, dict(self._sets(mode), **{"particles.0.voidage": 0.8}))]
+        # a block twice as tall (1-5 mm instead of 2.5-4.5 mm): the excess slip comes from
+        # the spheres within a kernel support of the block's faces, so it should halve
+        for eps in ((0.8,) if mode == "reduced" else (0.9, 0.8)):
+            w = 0.002 if mode == "reduced" else 0.004
+            out.append(Run(f"block_eps{eps}_tall", self.case,
+                           dict(self._sets(mode), **{"particles.0.voidage": eps, "particles.0.min": "[0,0,0.001]",
+                                                     "particles.0.max": f"[{w},{w},0.005]",
+                                                     "contact.stiffness": 0.01})))
+        for hd in self.SWEEP[mode]:
+            out.append(Run(f"block_sweep_hd{hd:g}", self.case, self._sets(mode, self.SWEEP_WIDTH, hd)))
+        return out
+
+    def measure(self, r):
+        """(mean slip, reference, eps, window) of one block run."""
+        sp = r.species()
+        rho_f, mu = r.fluid()
+        eps = r.case["particles"][0]["voidage"]
+        ref = theory.di_felice_block_slip(sp["diameter"], sp["density"], rho_f, mu, eps, r.g())
+        t, slip = r.log["time"], r.log[f"slip_z_mean:{sp['name']}"]
+        period = r.acoustic_period()
+        t1 = t[-1]
+        # whole periods after 3 ms of start-up: the block's slip reaches 63 % of its
+        # terminal value at ~0.8 ms (measured, eps = 0.9), so 3 ms is > 3 relaxation times
+        n = int((t1 - self.STARTUP) // period)
+        if n < 1:
+            return float("nan"), ref, eps, (t1, t1)
+        t0 = t1 - n * period
+        return time_average(t, slip, t0, t1), ref, eps, (t0, t1)
+
+    def evaluate(self, results, ctx):
+        rows = []
+        fig, ax = plt.subplots(figsize=(6, 4))
+        for key in ("block_eps0.9", "block_eps0.8"):
+            r = results[key]
+            if not r.ok or r.log is None:
+                rows += failed_run_rows(self.name, r, key)
+                continue
+            slip, ref, eps, (t0, t1) = self.measure(r)
+            rows.append(Row(self.name, f"mean slip, ε = {eps:g}, t ∈ [{t0 * 1e3:.1f}, {t1 * 1e3:.1f}] ms "
+                                       f"({round((t1 - t0) / r.acoustic_period())} × 4H/c0)",
+                            f"{ref * 1e3:.4g} mm/s", "Di Felice block slip (4.4)",
+                            f"{slip * 1e3:.4g} mm/s", slip / ref - 1, self.TARGET, r))
+            # Why the slip exceeds (4.4): with no net volume flux through the column the
+            # superficial slip eps_i (u_f - v) equals -v when eps_i = eps, so slip / |v|
+            # measures the mean voidage the spheres see, eps_i = eps slip / |v|. It is
+            # above eps because the spheres within a kernel support of the block's top
+            # and bottom faces see partly clear water. (4.4) at that eps_i:
+            v = -time_average(t_log := r.log["time"], r.log[f"vz_mean:{r.species()['name']}"], t0, t1)
+            eps_i = eps * slip / v
+            sp = r.species()
+            rho_f, mu = r.fluid()
+            ref_i = theory.di_felice_block_slip(sp["diameter"], sp["density"], rho_f, mu, eps_i, r.g())
+            rows.append(Row(self.name, f"same slip against (4.4) at the voidage the spheres see, "
+                                       f"ε_i = ε · slip/|v| = {eps_i:.4f} (|v| = {v * 1e3:.4g} mm/s)",
+                            f"{ref_i * 1e3:.4g} mm/s", "Di Felice block slip (4.4) at ε_i",
+                            f"{slip * 1e3:.4g} mm/s", slip / ref_i - 1, None, r,
+                            note="explains the error above: kernel smoothing of ε at the block's faces"))
+            t = t_log
+            line, = ax.plot(t * 1e3, r.log[f"slip_z_mean:{r.species()['name']}"] * 1e3, label=f"sphdem ε = {eps:g}")
+            ax.axhline(ref * 1e3, color=line.get_color(), ls="--", label=f"(4.4) ε = {eps:g}")
+            ax.axvspan(t0 * 1e3, t1 * 1e3, color=line.get_color(), alpha=0.08)
+        # finite-block face effect: error(H_b) = a + b / H_b from the two block heights
+        for eps in (0.9, 0.8):
+            short, tall = results.get(f"block_eps{eps}"), results.get(f"block_eps{eps}_tall")
+            if tall is None or short is None:
+                continue
+            if not tall.ok or tall.log is None or not short.ok or short.log is None:
+                rows += failed_run_rows(self.name, tall, f"block_eps{eps}_tall")
+                continue
+            pts = []
+            for r in (short, tall):
+                slip, ref, _, _ = self.measure(r)
+                g0 = r.case["particles"][0]
+                pts.append((g0["max"][2] - g0["min"][2], slip / ref - 1, slip))
+            (h1, e1, _), (h2, e2, s2) = pts
+            b = (e1 - e2) / (1 / h1 - 1 / h2)
+            a = e1 - b / h1
+            rows.append(Row(self.name, f"ε = {eps:g}, block {h2 * 1e3:.3g} mm tall instead of {h1 * 1e3:.3g} mm: mean slip",
+                            f"{ref * 1e3:.4g} mm/s", "Di Felice block slip (4.4)", f"{s2 * 1e3:.4g} mm/s", e2, None, tall,
+                            note="the face effect should halve"))
+            rows.append(Row(self.name, f"ε = {eps:g}, infinite-block limit a of error = a + b/H_b "
+                                       f"(H_b = {h1 * 1e3:.3g}, {h2 * 1e3:.3g} mm; b = {b * 1e3:.3g} % mm)",
+                            f"{ref * 1e3:.4g} mm/s", "Di Felice block slip (4.4)", f"{ref * (1 + a) * 1e3:.4g} mm/s",
+                            a, None, tall, note="extrapolation: the bulk drag against (4.4)"))
+        ax.set_xlabel("t (ms)")
+        ax.set_ylabel("superficial slip (mm/s)")
+        ax.set_title("rigid block: slip against Di Felice (4.4); shaded: averaging window")
+        ax.legend(fontsize=8)
+        ctx.save(fig, "block_slip.png")
+
+        # error-versus-h/d curve
+        pts = []
+        for key, r in results.items():
+            if not key.startswith("block_sweep_hd"):
+                continue
+            if not r.ok or r.log is None:
+                rows += failed_run_rows(self.name, r, key)
+                continue
+            slip, ref, eps, (t0, t1) = self.measure(r)
+            hd = r.hd()
+            err = slip / ref - 1
+            pts.append((hd, err))
+            target = self.TARGET if abs(hd - 2) < 1e-9 else None
+            v = -time_average(r.log["time"], r.log[f"vz_mean:{r.species()['name']}"], t0, t1)
+            note = f"ε_i = ε · slip/|v| = {eps * slip / v:.4f}"
+            if not target:
+                note += "; curve point (thesis: 4.3 % at h/d = 2, 14 % at 6)"
+            rows.append(Row(self.name, f"h/d sweep ({self.SWEEP_WIDTH * 1e3:g} mm box): mean slip, ε = {eps:g}",
+                            f"{ref * 1e3:.4g} mm/s", "Di Felice block slip (4.4)",
+                            f"{slip * 1e3:.4g} mm/s", err, target, r, note=note))
+        if pts:
+            pts.sort()
+            fig, ax = plt.subplots(figsize=(5, 4))
+            ax.plot([p[0] for p in pts], [100 * p[1] for p in pts], "o-",
+                    label=f"sphdem, {self.SWEEP_WIDTH * 1e3:g} mm box")
+            main = results.get("block_eps0.9")
+            if main is not None and main.ok and main.log is not None:
+                slip, ref, _, _ = self.measure(main)
+                w = main.case["domain"]["size"][0]
+                ax.plot([main.hd()], [100 * (slip / ref - 1)], "D", label=f"sphdem, {w * 1e3:g} mm box (row above)")
+            ax.plot(list(self.THESIS_ERROR), [100 * e for e in self.THESIS_ERROR.values()], "s",
+                    mfc="none", label="thesis (|error|)")
+            ax.axhspan(-100 * self.TARGET, 100 * self.TARGET, color="g", alpha=0.1, label="±4 %")
+            ax.axhline(0, color="k", lw=0.5)
+            ax.set_xlabel("h/d = dx/d")
+            ax.set_ylabel("slip error against (4.4) (%)")
+            ax.set_title("rigid block ε = 0.9: error versus resolution")
+            ax.legend(fontsize=8)
+            ctx.save(fig, "block_error_vs_hd.png")
+        return rows
+
+
+class SuspensionMonodisperse:
+    """Thesis §4.7/§5.4: homogeneous suspension. The clear-liquid interface falls at the
+    hindered settling speed of the initial voidage (Kynch 1952), computed from (4.4), and
+    from Richardson-Zaki with the Garside-Al-Dibouni exponent as a second reference."""
+    name = "suspension_monodisperse"
+    case = "cases/suspension_monodisperse.yaml"
+    TARGET = 0.08            # issue 4: under 8 %
+    EPS_RCP = 0.36           # random close packing of equal frictionless spheres
+
+    def runs(self, mode):
+        if mode == "reduced":
+            # 2 x 2 mm periodic width, 2.4 mm of suspension under 1.2 mm of water (the
+            # case's clear layer), k = 1 N/m with 10 sub-steps per contact time (t_c =
+            # 80 us): two DEM sub-steps per half SPH step instead of ~40. A sphere hitting
+            # the wall at 5 mm/s overlaps by v sqrt(m12/k) ~ 1e-3 d; the row
+            # max_overlap_over_d checks that contacts stay below the case's 0.01 d.
+            interface = {"domain.size": "[0.002,0.002,0.0036]", "particles.0.max": "[0.002,0.002,0.0024]",
+                         "contact.stiffness": 1, "time.dem_steps_per_contact": 10, "time.end": 0.035,
+                         "insitu.every": 1e-3, "insitu.grid_spacing": 5e-5, "output.log_interval": 2.5e-4}
+            return [Run("suspension_interface", self.case, interface, insitu=True)]
+        # full: the case's column, stiffness and resolution; 60 ms (the whole settling
+        # takes ~1 s, ~6 h on 2 cores). The final sediment from a shorter column.
+        interface = {"time.end": 0.06, "insitu.every": 1e-3, "insitu.grid_spacing": 5e-5,
+                     "output.log_interval": 2.5e-4}
+        sediment = {"domain.size": "[0.002,0.002,0.0036]", "particles.0.max": "[0.002,0.002,0.0024]",
+                    "contact.stiffness": 10, "time.end": 0.6, "output.log_interval": 2e-3}
+        return [Run("suspension_interface", self.case, interface, insitu=True),
+                Run("suspension_sediment", self.case, sediment)]
+
+    def window(self, r, u_ref):
+        """Fit window: from 2 acoustic periods (the start-up: spheres reach their hindered
+        speed in a few t_d = 1.6 ms, the column rings at 4H/c0) over whole acoustic
+        periods, ending before time.end and before the interface comes within 0.3 mm of
+        the sediment by the Kynch estimate (sediment rising at u (1-eps0)/(eps0 - eps_s)
+        with eps_s = 0.5)."""
+        period = r.acoustic_period()
+        g0 = r.case["particles"][0]
+        eps0, h0 = g0["voidage"], g0["max"][2]
+        u_sed = u_ref * (1 - eps0) / (eps0 - 0.5)
+        t_meet = (h0 - 3e-4) / (u_ref + u_sed)
+        t0 = 2 * period
+        t_end = min(r.interfaces["time"][-1], t_meet)
+        n = int((t_end - t0) // period)
+        return t0, t0 + n * period, n
+
+    def evaluate(self, results, ctx):
+        rows = []
+        r = results["suspension_interface"]
+        if not r.ok or r.log is None:
+            return failed_run_rows(self.name, r, "interface")
+        sp = r.species()
+        rho_f, mu = r.fluid()
+        eps0 = r.case["particles"][0]["voidage"]
+        u_k = theory.di_felice_block_slip(sp["diameter"], sp["density"], rho_f, mu, eps0, r.g())
+        u_rz, u_t, re_t, n_rz = theory.richardson_zaki(sp["diameter"], sp["density"], rho_f, mu, eps0, r.g())
+        rz_src = (f"Richardson–Zaki u_t ε^n, n = {n_rz:.3f} (Garside & Al-Dibouni, Re_t = {re_t:.3f}), "
+                  f"u_t = {u_t * 1e3:.3f} mm/s (Dallavalle C_d)")
+        name = sp["name"]
+        fit, eq = None, None
+        if r.interfaces is None:
+            why = "no in-situ interfaces.csv (sphdem built without ParaView)"
+            rows.append(Row(self.name, "interface velocity", f"{u_k * 1e3:.4g} mm/s", "Kynch with (4.4)",
+                            "not measured", None, self.TARGET, r, skip=why))
+            t_lo, t_hi = 2 * r.acoustic_period(), r.log["time"][-1]
+            t_lo, t_hi = t_lo, t_lo + int((t_hi - t_lo) // r.acoustic_period()) * r.acoustic_period()
+        else:
+            t_lo, t_hi, nper = self.window(r, u_k)
+            ti, zt = r.interfaces["time"], r.interfaces["z_top"]
+            sel = (ti >= t_lo - 1e-9) & (ti <= t_hi + 1e-9) & np.isfinite(zt)
+            if nper < 1 or sel.sum() < 4:
+                rows.append(Row(self.name, "interface velocity", f"{u_k * 1e3:.4g} mm/s", "Kynch with (4.4)",
+                                f"window too short ({sel.sum()} points)", None, self.TARGET, r))
+            else:
+                slope, icpt = np.polyfit(ti[sel], zt[sel], 1)
+                u_sim = -slope
+                q = (f"interface velocity −dz_top/dt, line fit over t ∈ [{t_lo * 1e3:.1f}, {t_hi * 1e3:.1f}] ms "
+                     f"({nper} × 4H/c0, {sel.sum()} analyses)")
+                rows.append(Row(self.name, q, f"{u_k * 1e3:.4g} mm/s", f"Kynch: hindered settling (4.4) at ε0 = {eps0:g}",
+                                f"{u_sim * 1e3:.4g} mm/s", u_sim / u_k - 1, self.TARGET, r))
+                # informative: (4.4) and R-Z/G&A-D differ by ~8 % at eps = 0.9 by themselves
+                # (they are two empirical fits), and the solver implements Di Felice's law,
+                # so a pass/fail here would judge the drag law, not the solver.
+                rows.append(Row(self.name, "interface velocity (as above)", f"{u_rz * 1e3:.4g} mm/s", rz_src,
+                                f"{u_sim * 1e3:.4g} mm/s", u_sim / u_rz - 1, None, r,
+                                note=f"second reference; (4.4) is {100 * (u_k / u_rz - 1):+.1f} % from it"))
+                fit = (ti, zt, slope, icpt, u_sim)
+        # Equivalent sharp interface from the voidage map: the solid volume above a level
+        # z_ref inside the homogeneous suspension, spread at the suspension's voidage,
+        # z_eq = z_ref + int_{z_ref} (1 - eps) dz / (1 - eps_s). By mass conservation it
+        # falls at the flux through z_ref over (1 - eps_s), i.e. the speed of the bulk
+        # spheres, whatever the shape of the front: a cross-check of the criterion above.
+        vh = os.path.join(r.dir, "insitu", "voidage_height.h5")
+        if r.interfaces is not None and os.path.exists(vh) and t_hi > t_lo:
+            import h5py
+            with h5py.File(vh, "r") as f:
+                tv, zv, ev = f["time"][:], f["z"][:], f["voidage"][:]
+            ti, zt, zb = r.interfaces["time"], r.interfaces["z_top"], r.interfaces["z_bottom"]
+            sel = (tv >= t_lo - 1e-9) & (tv <= t_hi + 1e-9)
+            h2 = 2 * r.case["fluid"]["smoothing_factor"] * r.case["fluid"]["spacing"]   # kernel support
+            z_ref = 0.5 * (np.nanmin(zt[sel]) - h2 + np.nanmax(zb[sel]) + h2)
+            eps_s = np.median(ev[0][(zv > h2) & (zv < zt[0] - h2)])
+            above = zv >= z_ref
+            z_eq = np.array([z_ref + np.trapz(1 - e[above], zv[above]) / (1 - eps_s) for e in ev[sel]])
+            if np.nanmin(zt[sel]) - h2 > np.nanmax(zb[sel]) + h2 and sel.sum() >= 4:
+                u_eq = -np.polyfit(tv[sel], z_eq, 1)[0]
+                eq = (tv[sel], z_eq, u_eq)
+                rows.append(Row(self.name, f"equivalent sharp interface (solid above z = {z_ref * 1e3:.2f} mm / "
+                                           f"(1 − ε_s), ε_s = {eps_s:.3f}), line fit over the same window",
+                                f"{u_k * 1e3:.4g} mm/s", "Kynch with (4.4)", f"{u_eq * 1e3:.4g} mm/s",
+                                u_eq / u_k - 1, None, r, note="bulk sphere speed by mass conservation"))
+        if fit is not None:
+            ti, zt, slope, icpt, u_sim = fit
+            z0 = icpt + slope * t_lo
+            fig, axs = plt.subplots(1, 2, figsize=(11, 4))
+            ax = axs[0]
+            ax.plot(ti * 1e3, zt * 1e3, "o", ms=3, label="sphdem z_top (in situ)")
+            tt = np.array([0, ti[-1]])
+            ax.plot(tt * 1e3, (icpt + slope * tt) * 1e3, "k-", lw=1, label=f"fit: {u_sim * 1e3:.3g} mm/s")
+            ax.plot(tt * 1e3, (z0 - u_k * (tt - t_lo)) * 1e3, "r--", label=f"Kynch (4.4): {u_k * 1e3:.3g} mm/s")
+            ax.plot(tt * 1e3, (z0 - u_rz * (tt - t_lo)) * 1e3, "g:", label=f"R–Z/G&A-D: {u_rz * 1e3:.3g} mm/s")
+            ax.axvspan(t_lo * 1e3, t_hi * 1e3, color="grey", alpha=0.1)
+            ax.set_xlabel("t (ms)")
+            ax.set_ylabel("clear-liquid interface height (mm)")
+            ax.set_title(f"suspension ε0 = {eps0:g}; shaded: fit window")
+            ax.legend(fontsize=8)
+            ax = axs[1]
+            ax.plot(ti * 1e3, (zt - (z0 - u_k * (ti - t_lo))) * 1e6, "o", ms=3, label="z_top")
+            if eq is not None:
+                te, ze, u_eq = eq
+                ax.plot(te * 1e3, (ze - ze[0] + u_k * (te - te[0])) * 1e6, "s", ms=3,
+                        label=f"equivalent sharp interface ({u_eq * 1e3:.3g} mm/s), shifted to 0")
+            ax.axhline(0, color="r", ls="--", label="Kynch (4.4)")
+            ax.axvspan(t_lo * 1e3, t_hi * 1e3, color="grey", alpha=0.1)
+            ax.set_xlabel("t (ms)")
+            ax.set_ylabel("height − Kynch line (µm)")
+            ax.legend(fontsize=8)
+            ctx.save(fig, "suspension_interface.png")
+        # the spheres' own mean speed over the same window (log.csv; no in-situ needed):
+        t, vz = r.log["time"], r.log[f"vz_mean:{name}"]
+        if t_hi > t_lo:
+            v_mean = -time_average(t, vz, t_lo, t_hi)
+            rows.append(Row(self.name, f"mean sphere speed −v_z over t ∈ [{t_lo * 1e3:.1f}, {t_hi * 1e3:.1f}] ms",
+                            f"{u_k * 1e3:.4g} mm/s", "Kynch with (4.4) (all spheres fall at u until the sediment grows)",
+                            f"{v_mean * 1e3:.4g} mm/s", v_mean / u_k - 1, None, r,
+                            note="includes the spheres already stopped at the wall"))
+        ov = float(np.max(r.log["max_overlap_over_d"]))
+        rows.append(Row(self.name, "largest overlap / d over the run", "< 0.01", "cases/suspension_monodisperse.yaml",
+                        f"{ov:.2e}", ov / 0.01, 1.0, r, ratio=True))
+
+        s = results.get("suspension_sediment")
+        if s is None:
+            rows.append(Row(self.name, "final sediment voidage", f"≈ 0.5 (thesis); {self.EPS_RCP} (RCP)",
+                            "physics.md §5; random close packing", "not reached", None, None, None,
+                            skip="the reduced run ends long before the suspension has settled (full mode only)"))
+        elif not s.ok or s.log is None:
+            rows += failed_run_rows(self.name, s, "final sediment voidage")
+        else:
+            g0 = s.case["particles"][0]
+            e0, h0 = g0["voidage"], g0["max"][2] - g0["min"][2]
+            com = s.log[f"com_z:{name}"][-1]
+            # a uniform sediment from the wall to z_s has its centre of mass at z_s / 2
+            eps_s = 1 - (1 - e0) * h0 / (2 * com)
+            v_end = abs(s.log[f"vz_mean:{name}"][-1])
+            settled = v_end < 0.01 * u_k
+            rows.append(Row(self.name, f"final sediment voidage (1 − (1−ε0) H0 / (2 com_z)) at t = {s.log['time'][-1]:.2g} s",
+                            f"≈ 0.5 (thesis §5.4); {self.EPS_RCP} (RCP)", "physics.md §5; random close packing",
+                            f"{eps_s:.3f}" + ("" if settled else f" (not settled: |v_z| = {v_end * 1e3:.2g} mm/s)"),
+                            None, None, s))
+            ov = float(np.max(s.log["max_overlap_over_d"]))
+            rows.append(Row(self.name, "largest overlap / d (sediment run)", "< 0.01", "cases/suspension_monodisperse.yaml",
+                            f"{ov:.2e}", ov / 0.01, 1.0, s, ratio=True))
+        return rows
+
+
+class TheoryCheck:
+    """The closed forms themselves: (4.4) at the thesis's parameters against its value."""
+    name = "theory"
+
+    def runs(self, mode):
+        return []
+
+    def evaluate(self, results, ctx):
+        v = theory.di_felice_block_slip(1e-4, 2500, 1000, 8.9e-4, 0.9)
+        ref = 4.924e-3
+        return [Row(self.name, "Di Felice slip (4.4), ε = 0.9, d = 100 µm, ρp = 2500 (theory.py)",
+                    "4.924 mm/s", "thesis §4.5 (closed_forms.hpp tolerance 0.03 mm/s)", f"{v * 1e3:.4f} mm/s",
+                    v / ref - 1, 0.03e-3 / ref, None,
+                    note="theory.py and closed_forms.hpp both give 4.9124 mm/s with μ = 8.9e-4, g = 9.81")]
+
+
+# ---- The registry ------------------------------------------------------------------------
+# One entry per scene. To add a scene: a class with `name`, `runs(mode)` and
+# `evaluate(results, ctx)` (see validation/README.md), then one line here.
+SCENES = [
+    TheoryCheck(),
+    SingleParticle(),
+    BlockMonodisperse(),
+    SuspensionMonodisperse(),
+    # TODO(issue 4, other branches): BlockBidisperse (cases/block_bidisperse_*.yaml, eq. 4.5),
+    # SuspensionTwoDensities, SuspensionBidisperse, SandColumn (peak excess pore pressure
+    # (1-n)(rho_s/rho_f - 1) within 10 %, coarse grains at the base, bulk density 1965 kg/m3).
+    # Their case files are being written elsewhere; add the classes here when they land.
+]
+
+
+# ----------------------------------------------------------------------------------------
+# Report
+# ----------------------------------------------------------------------------------------
+class Context:
+    def __init__(self, fig_dir):
+        self.fig_dir = fig_dir
+        self.figures = []
+
+    def save(self, fig, name):
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.fig_dir, name), dpi=110)
+        plt.close(fig)
+        self.figures.append(name)
+
+
+def sh(cmd):
+    try:
+        return subprocess.run(cmd, capture_output=True, text=True, cwd=REPO).stdout.strip()
+    except OSError:
+        return ""
+
+
+def machine():
+    model, cores = platform.processor() or "?", os.cpu_count()
+    for line in sh(["lscpu"]).splitlines():
+        if line.startswith("Model name:"):
+            model = line.split(":", 1)[1].strip()
+    return f"{model}, {cores} logical cores ({platform.system()} {platform.release()})"
+
+
+def fmt_err(row):
+    if row.error is None or not math.isfinite(row.error):
+        return "–"
+    if row.ratio:
+        return f"{row.error:.3g} × limit"
+    return f"{100 * row.error:+.2f} %"
+
+
+def fmt_target(row):
+    if row.target is None:
+        return "–"
+    return f"≤ {row.target:g} × limit" if row.ratio else f"≤ {100 * row.target:.3g} %"
+
+
+def write_markdown(path, rows, args, total_wall, figures, started):
+    commit = sh(["git", "rev-parse", "--short", "HEAD"])
+    dirty = " (with uncommitted changes)" if sh(["git", "status", "--porcelain", "--untracked-files=no"]) else ""
+    out = ["# Validation report", "",
+           f"Generated by `validation/report.py`; do not edit by hand. Mode **{args.mode}**.", "",
+           "```sh", " ".join(shlex.quote(a) for a in ["/usr/bin/python3", "validation/report.py"] + sys.argv[1:]), "```",
+           "",
+           f"- date: {started:%Y-%m-%d %H:%M %Z}",
+           f"- machine: {machine()}",
+           f"- commit: {commit}{dirty}",
+           f"- total wall time: {total_wall:.0f} s ({total_wall / 60:.1f} min), runs under `nice`",
+           f"- result: **{sum(r.status == 'PASS' for r in rows)} pass, {sum(r.status == 'FAIL' for r in rows)} fail**, "
+           f"{sum(r.status == 'INFO' for r in rows)} informative, {sum(r.status == 'SKIP' for r in rows)} skipped", "",
+           "Error = simulated / reference − 1 unless the quantity says otherwise; a row passes when |error| ≤ target. "
+           "Wall time is that of the run the row reads (rows of one run share it).", "",
+           "| scene | quantity | reference | source | simulated | error | target | status | resolution | wall (s) |",
+           "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        sim = r.simulated + (f" — {r.note}" if r.note else "") + (f" — {r.skip}" if r.skip else "")
+        wall = "–" if r.wall is None else f"{r.wall:.0f}"
+        cells = [r.scene, r.quantity, r.reference, r.source, sim, fmt_err(r), fmt_target(r), r.status,
+                 r.resolution, wall]
+        out.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
+    out += ["", "## Figures", ""]
+    for f in figures:
+        out.append(f"![{f}](figures/{f})")
+        out.append("")
+    open(path, "w").write("\n".join(out) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--mode", choices=("reduced", "full"), required=True)
+    ap.add_argument("--build", required=True, help="CMake build directory (holds app/sphdem)")
+    ap.add_argument("--out", required=True, help="where VALIDATION.md and figures/ go")
+    ap.add_argument("--runs", help="run directories (default BUILD/validation_runs/MODE)")
+    ap.add_argument("--scenes", nargs="*", help="only these scenes (default: all)")
+    ap.add_argument("--reuse", action="store_true", help="re-read runs already made with the same command")
+    ap.add_argument("--nice", type=int, default=10, help="nice level of the runs (0: none)")
+    ap.add_argument("--check", action="store_true",
+                    help="only `sphdem check` every run of the mode (validates the overrides, prints sizes)")
+    args = ap.parse_args()
+
+    started = datetime.datetime.now(datetime.timezone.utc)
+    sphdem = os.path.abspath(os.path.join(args.build, "app", "sphdem"))
+    if not os.access(sphdem, os.X_OK):
+        sys.exit(f"report.py: no sphdem at {sphdem}")
+    runs_dir = os.path.abspath(args.runs or os.path.join(args.build, "validation_runs", args.mode))
+    fig_dir = os.path.join(args.out, "figures")
+    os.makedirs(fig_dir, exist_ok=True)
+    ctx = Context(fig_dir)
+    scenes = [s for s in SCENES if not args.scenes or s.name in args.scenes]
+
+    if args.check:
+        bad = 0
+        for scene in scenes:
+            for run in scene.runs(args.mode):
+                cmd = run.command(sphdem, "unused")
+                cmd[1] = "check"
+                cmd = [c for c in cmd if c not in ("--out", "unused", "--no-insitu")]
+                p = subprocess.run(cmd, capture_output=True, text=True)
+                keep = [l for l in p.stdout.splitlines() if l.split()[:1] and l.split()[0] in
+                        ("SPH", "species", "time", "run", "contact")]
+                print(f"[check] {run.key}: exit {p.returncode}\n  " + "\n  ".join(keep + p.stderr.splitlines()))
+                bad += p.returncode != 0
+        return 1 if bad else 0
+
+    t_start = time.perf_counter()
+    rows = []
+    for scene in scenes:
+        results = {}
+        for run in scene.runs(args.mode):
+            results[run.key] = execute(run, sphdem, runs_dir, args.reuse, args.nice)
+        try:
+            rows += scene.evaluate(results, ctx)
+        except Exception as e:  # a broken evaluation is a failed row, not a crash of the report
+            rows.append(Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0))
+    total = time.perf_counter() - t_start
+
+    path = os.path.join(args.out, "VALIDATION.md")
+    write_markdown(path, rows, args, total, ctx.figures, started)
+    width = max(len(r.quantity) for r in rows)
+    for r in rows:
+        print(f"{r.status:4s}  {r.scene:24s} {r.quantity:{width}s}  ref {r.reference:30s} sim {r.simulated:28s} "
+              f"err {fmt_err(r):>9s} target {fmt_target(r)}")
+    n_fail = sum(r.status == "FAIL" for r in rows)
+    print(f"[report] {path}: {len(rows)} rows, {n_fail} failing, total wall {total:.0f} s")
+    return 1 if n_fail else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
