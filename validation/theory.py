@@ -116,3 +116,30 @@ if __name__ == "__main__":
     u, ut, ret, n = richardson_zaki(1e-4, 2500, 1000, 8.9e-4, 0.9)
     print(f"R-Z: u_t = {ut*1e3:.4f} mm/s, Re_t = {ret:.4f}, n = {n:.4f}, u = {u*1e3:.4f} mm/s")
     print(f"eps=0.8 block: {di_felice_block_slip(1e-4, 2500, 1000, 8.9e-4, 0.8)*1e3:.4f} mm/s")
+
+
+def beetstra_f_mono(eps, re):
+    """Beetstra, van der Hoef & Kuipers (2007) monodisperse drag factor (thesis 2.85-2.86):
+    F = f_mono 3 pi mu d u_s at voidage eps and Re = rho_f d |u_s| / mu."""
+    phi = 1.0 - eps
+    stokes = 10.0 * phi / eps ** 2 + eps ** 2 * (1.0 + 1.5 * math.sqrt(phi))
+    inertial = (0.413 * re / (24.0 * eps ** 2) * (1.0 / eps + 3.0 * eps * phi + 8.4 * re ** -0.343)
+                / (1.0 + 10.0 ** (3.0 * phi) * re ** (-(1.0 + 4.0 * phi) / 2.0)))
+    return stokes + inertial
+
+
+def bidisperse_block_slip(d1, d2, n1, rho_p, rho_f, mu, eps, g=G):
+    """Terminal superficial slip of a bidisperse constant-porosity block (thesis eq. 4.5):
+    u_T = (rho_p - rho_f) g <d>^2 / (18 mu [f_mono(eps, <Re>)/eps + (Sigma - 1)/eps^2]),
+    Sigma = sum x_i / y_i^2, y_i = d_i/<d>, <d> the Sauter mean, x_i volume fractions from
+    the number fraction n1 of size d1. It is the block's force balance with the drag (2.88)."""
+    v1, v2 = n1 * d1 ** 3, (1.0 - n1) * d2 ** 3
+    x1, x2 = v1 / (v1 + v2), v2 / (v1 + v2)
+    dm = 1.0 / (x1 / d1 + x2 / d2)
+    sigma = x1 / (d1 / dm) ** 2 + x2 / (d2 / dm) ** 2
+
+    def residual(u):
+        re = rho_f * dm * u / mu
+        return u - (rho_p - rho_f) * g * dm ** 2 / (18.0 * mu * (beetstra_f_mono(eps, re) / eps
+                                                                  + (sigma - 1.0) / eps ** 2))
+    return bisect(residual, 1e-9, 1.0)

@@ -113,10 +113,9 @@ TEST(BidisperseBlock, Block200And100DoubleSmoothing) {
 
 // The 150/100 block misses the 4 % of issue #4: +5.85 % (measured), as the monodisperse
 // 100 um block with the same Beetstra drag at h/d = 2 (+5.85 %; with Di Felice +3.43 %).
-// The excess is the kernel-smeared faces (smeared_block_slip): it predicts the simulated
-// slip; what remains is the edge spheres' smaller buoyancy (the pressure gradient is
-// smoothed over the faces too: -0.7 % of rho_av g on the sphere mean, +0.6 % in slip).
+// The excess is the kernel-smeared faces (smeared_block_slip): +5.77 % predicted from the
+// spheres' voidage at release, and the simulated slip is +0.07 % from that prediction.
 TEST(BidisperseBlock, Block150And100DoubleSmoothingIsTheSmearedFaceBalance) {
   const BlockRun r = run_block("block_bidisperse_150_100.yaml", kDouble);
-  EXPECT_NEAR(r.slip / r.smeared, 1.0, 0.015);
+  EXPECT_NEAR(r.slip / r.smeared, 1.0, 0.01);
 }
