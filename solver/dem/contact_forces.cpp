@@ -74,7 +74,7 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, c
   if (history.pair.size() != list.neighbour.size() || history.wall.size() != n_owned)
     throw std::logic_error("compute_contact_forces: the contact history is not loaded for this list");
   const long n = static_cast<long>(n_owned);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 256)  // as the normal-only pass
   for (long i = 0; i < n; ++i) {
     double fx = 0, fy = 0, fz = 0, qx = 0, qy = 0, qz = 0, dmax = 0;
     const double ri = s.radius[i], mi = s.mass[i];
