@@ -355,8 +355,10 @@ class EndToEndTest(unittest.TestCase):
         p_lz, p_cz = print_precision(log["com_z:glass"]), print_precision(c["com_z:glass"])
         log_t = np.array([float(s) for s in log["time"]])
         log_z = [float(s) for s in log["com_z:glass"]]
-        matches, worst = 0, 0.0
-        for ts, zs in zip(c["time"], c["com_z:glass"]):
+        log_v = [float(s) for s in log["vz_mean:glass"]]
+        self.assertIn("vz_mean:glass", c)
+        matches, worst, worst_v = 0, 0.0, 0.0
+        for ts, zs, vs in zip(c["time"], c["com_z:glass"], c["vz_mean:glass"]):
             t, z = float(ts), float(zs)
             t_tol = 1e-12 + half_unit(t, p_lt) + half_unit(t, p_ct)
             k = np.nonzero(np.abs(log_t - t) <= t_tol)[0]
@@ -367,9 +369,15 @@ class EndToEndTest(unittest.TestCase):
             tol = max(1e-9 * abs(zl), half_unit(zl, p_lz) + half_unit(z, p_cz))
             self.assertLessEqual(abs(z - zl), tol, "t = %s: com.csv %r, log.csv %r" % (ts, zs, zl))
             worst = max(worst, abs(z - zl) / abs(zl))
+            # one species of equal spheres: the mass-weighted mean vz is the log's mean vz
+            vl, v = log_v[k[0]], float(vs)
+            v_tol = max(1e-9 * abs(vl), half_unit(vl, print_precision(log["vz_mean:glass"])) +
+                        half_unit(v, print_precision(c["vz_mean:glass"])))
+            self.assertLessEqual(abs(v - vl), v_tol, "t = %s: com.csv vz_mean %r, log.csv %r" % (ts, vs, vl))
+            worst_v = max(worst_v, abs(v - vl) / max(abs(vl), 1e-300))
             matches += 1
-        print("com.csv vs log.csv: %d matched rows, max rel diff %.2e (log %d digits, com %d)"
-              % (matches, worst, p_lz, p_cz), file=sys.stderr)
+        print("com.csv vs log.csv: %d matched rows, max rel diff %.2e in com_z, %.2e in vz_mean (log %d digits, "
+              "com %d)" % (matches, worst, worst_v, p_lz, p_cz), file=sys.stderr)
         # insitu.every == output.log_interval: every analysis has its log row.
         self.assertEqual(matches, len(c["time"]))
         self.assertGreaterEqual(matches, 5)

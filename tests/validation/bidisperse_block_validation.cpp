@@ -104,12 +104,8 @@ TEST(BidisperseBlock, ReferenceReducesToMonodisperse) {
   EXPECT_NEAR(u, 1500 * 9.81 * d * d * eps / (18 * mu * theory::beetstra_f_mono(eps, re)), 1e-12);
 }
 
-// issue #4: under 4 % at h/d = 2 (the thesis reached 4.3 % for the monodisperse block).
-// Measured: +2.83 %.
-TEST(BidisperseBlock, Block200And100DoubleSmoothing) {
-  const BlockRun r = run_block("block_bidisperse_200_100.yaml", kDouble);
-  EXPECT_NEAR(r.slip / r.reference, 1.0, 0.04);
-}
+// (4.5) for the 200/100 block (double smoothing: +2.83 % measured; classic at h/d_big = 2:
+// +7.61 %) is a row of validation/report.py, which CI runs in its reduced mode.
 
 // The 150/100 block misses the 4 % of issue #4: +5.85 % (measured), as the monodisperse
 // 100 um block with the same Beetstra drag at h/d = 2 (+5.85 %; with Di Felice +3.43 %).
