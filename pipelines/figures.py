@@ -393,6 +393,10 @@ def figure_com(com, title, out_dir):
     for i, (name, z) in enumerate(series):
         _plot_series(ax, t, z * M_TO_MM, False, color=colors[i % len(colors)],
                      linewidth=1.8, label=name, zorder=3)
+        front = com.get("front_z:" + name)  # the species' suspension front, when recorded
+        if len(series) > 1 and front is not None and np.any(np.isfinite(front)):
+            _plot_series(ax, t, front * M_TO_MM, False, color=colors[i % len(colors)],
+                         linewidth=1.0, linestyle="--", label=name + " front", zorder=3)
     ax.set_xlim(t[0], t[-1])
     ax.grid(True, alpha=0.3)
     handles, labels = ax.get_legend_handles_labels()
@@ -401,7 +405,8 @@ def figure_com(com, title, out_dir):
     ax.legend(handles, labels, loc="best", fontsize=9, title="species",
               title_fontsize=9, ncol=1 if len(labels) <= 6 else 2)
     ax.set_xlabel("time t (ms)", fontsize=11)
-    ax.set_ylabel("centre-of-mass height z (mm)", fontsize=11)
+    ax.set_ylabel("centre of mass (—), suspension front (--) z (mm)" if len(series) > 1
+                  else "centre-of-mass height z (mm)", fontsize=11)
     ax.set_title("%s: centre-of-mass height" % title, fontsize=12)
     return _save(fig, out_dir, COM_PNG)
 
