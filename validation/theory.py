@@ -107,17 +107,6 @@ def acoustic_period(fill_height, c0):
     return 4.0 * fill_height / c0
 
 
-if __name__ == "__main__":
-    v = di_felice_block_slip(1e-4, 2500, 1000, 8.9e-4, 0.9)
-    print(f"Di Felice block slip at eps=0.9: {v*1e3:.4f} mm/s "
-          f"(polynomial residual {di_felice_polynomial_residual(v, 1e-4, 2500, 1000, 8.9e-4, 0.9):.2e})")
-    s = StokesTransient(1e-4, 2500, 1000, 8.9e-4)
-    print(f"Stokes: v_T = {s.v_terminal*1e3:.4f} mm/s, t_d = {s.t_relax*1e3:.4f} ms")
-    u, ut, ret, n = richardson_zaki(1e-4, 2500, 1000, 8.9e-4, 0.9)
-    print(f"R-Z: u_t = {ut*1e3:.4f} mm/s, Re_t = {ret:.4f}, n = {n:.4f}, u = {u*1e3:.4f} mm/s")
-    print(f"eps=0.8 block: {di_felice_block_slip(1e-4, 2500, 1000, 8.9e-4, 0.8)*1e3:.4f} mm/s")
-
-
 def beetstra_f_mono(eps, re):
     """Beetstra, van der Hoef & Kuipers (2007) monodisperse drag factor (thesis 2.85-2.86):
     F = f_mono 3 pi mu d u_s at voidage eps and Re = rho_f d |u_s| / mu."""
@@ -143,3 +132,124 @@ def bidisperse_block_slip(d1, d2, n1, rho_p, rho_f, mu, eps, g=G):
         return u - (rho_p - rho_f) * g * dm ** 2 / (18.0 * mu * (beetstra_f_mono(eps, re) / eps
                                                                   + (sigma - 1.0) / eps ** 2))
     return bisect(residual, 1e-9, 1.0)
+
+
+# --- Multispecies hindered settling (Masliyah 1979) with Di Felice's drag ----------------
+def di_felice_drag(us, d, rho_f, mu, eps):
+    """Di Felice (1994) drag with Dallavalle's C_d on one sphere (thesis 2.76-2.79):
+    f = 1/8 C_d eps^-xi pi d^2 rho_f |u_s| u_s, Re = rho_f |u_s| d / mu, u_s the
+    superficial slip eps (u_f - v). Signed like u_s; 0 at u_s = 0."""
+    if us == 0.0:
+        return 0.0
+    re = rho_f * abs(us) * d / mu
+    return 0.125 * dallavalle_cd(re) * eps ** (-di_felice_xi(re)) * math.pi * d * d * rho_f * abs(us) * us
+
+
+def masliyah_velocities(species, rho_f, mu, g=G):
+    """Lab-frame settling speeds of a uniform multispecies suspension, no net volume flux
+    (Masliyah 1979, Chem. Eng. Sci. 34:1166; Lockett & Al-Habbooby 1973; Patwardhan & Tien
+    1985), with the Di Felice drag of the scenes in place of Masliyah's Richardson-Zaki f.
+
+    species: list of (d_i, rho_i, phi_i). eps = 1 - sum phi_j and
+      rho_susp = eps rho_f + sum phi_j rho_j                                (M1)
+    Each sphere carries its weight less the buoyancy of the suspension (the mean pressure
+    gradient of a suspension at rest on its base is rho_susp g) with the drag of its own
+    superficial slip u_s,i = eps (u_f - v_i):
+      (rho_i - rho_susp) V_i g = f_DiFelice(u_s,i; d_i, eps)                 (M2)
+    and the volume flux through a horizontal plane vanishes (batch settling):
+      eps u_f + sum phi_j v_j = 0  =>  u_f = sum phi_j s_j,  s_j = u_s,j / eps     (M3)
+    so species i falls (lab frame, downward positive) at
+      w_i = -v_i = s_i - sum_j phi_j s_j.                                   (M4)
+    One species: rho_susp = rho_av of (4.2-4.4) and w = eps s = u_s, i.e.
+    di_felice_block_slip. Returns (w list, u_s list, eps, rho_susp)."""
+    phi_tot = sum(p for _, _, p in species)
+    eps = 1.0 - phi_tot
+    rho_susp = eps * rho_f + sum(p * r for _, r, p in species)
+    slips = []
+    for d, rho, phi in species:
+        weight = (rho - rho_susp) * math.pi * d ** 3 / 6.0 * g
+        if weight == 0.0:
+            slips.append(0.0)
+            continue
+        mag = bisect(lambda u: di_felice_drag(u, d, rho_f, mu, eps) - abs(weight), 1e-12, 10.0)
+        slips.append(math.copysign(mag, weight))
+    s = [u / eps for u in slips]
+    u_f = sum(p * si for (_, _, p), si in zip(species, s))
+    w = [si - u_f for si in s]
+    return w, slips, eps, rho_susp
+
+
+class TwoSpeciesKynch:
+    """Kynch (1952) construction for a uniform two-species suspension settling from rest
+    (the heavy or faster species first), with the Masliyah velocities above: from the top,
+    clear liquid | zone B (slower species alone at phi_B) | zone A (the initial mixture).
+
+    Lower front (A -> B), where the faster species ends: continuity of that species,
+    whose concentration is 0 in B, gives
+      U_1 = w_fast^A                                                        (K1)
+    Continuity of the slower species across the same front fixes its concentration in B:
+      phi_slow^A (w_slow^A - U_1) = phi_B (w_slow^B(phi_B) - U_1)            (K2)
+    with w_slow^B(phi) its monodisperse hindered speed at eps = 1 - phi (M4 with one
+    species = (4.4)). The branch taken is w_slow^B(phi_B) <= U_1 (zone B falls behind the
+    lower front; phi_B -> phi_slow^A + phi_fast^A as the densities become equal).
+    Upper front (B -> clear), by continuity of the slower species into clear liquid:
+      U_2 = w_slow^B(phi_B)                                                  (K3)
+    All speeds downward positive, lab frame. Both fronts are shocks here (dilute: the
+    flux phi w(phi) is concave, so the characteristics run into them)."""
+
+    def __init__(self, fast, slow, rho_f, mu, g=G):
+        (d1, r1, p1), (d2, r2, p2) = fast, slow
+        (w1, w2), (us1, us2), self.eps0, self.rho_susp = masliyah_velocities([fast, slow], rho_f, mu, g)
+        self.w_fast_A, self.w_slow_A, self.us_A = w1, w2, (us1, us2)
+        self.u1 = w1
+
+        def w_slow_alone(phi):
+            return masliyah_velocities([(d2, r2, phi)], rho_f, mu, g)[0][0]
+        self.w_slow_alone = w_slow_alone
+        flux_in = p2 * (self.u1 - w2)   # slow species left behind by the lower front, per unit area and time
+
+        def excess(phi):                # phi_B (U_1 - w_B(phi_B)) - flux_in: increases with phi on the branch
+            return phi * (self.u1 - w_slow_alone(phi)) - flux_in
+        phi_hi = 0.6
+        # lowest phi on the branch: where the slow species alone falls as fast as the front
+        lo = 1e-9
+        if w_slow_alone(lo) > self.u1:
+            lo = bisect(lambda phi: w_slow_alone(phi) - self.u1, lo, phi_hi)
+        self.phi_B = lo if excess(lo) >= 0.0 else bisect(excess, lo, phi_hi)
+        self.eps_B = 1.0 - self.phi_B
+        self.u2 = w_slow_alone(self.phi_B)
+
+
+def mixture_self_check(d=1e-4, rho=2450.0, rho_f=1000.0, mu=8.9e-4, eps0=0.9, g=G):
+    """Unit check: with both species of equal density the mixture model must reduce to the
+    monodisperse reference (4.4): each species falls at di_felice_block_slip(eps0), both
+    fronts move at it and zone B holds the whole initial concentration. Also one species
+    alone at eps gives (4.4). Returns the largest relative deviation; raises if > 1e-9."""
+    ref = di_felice_block_slip(d, rho, rho_f, mu, eps0, g)
+    phi = 0.5 * (1.0 - eps0)
+    k = TwoSpeciesKynch((d, rho, phi), (d, rho, phi), rho_f, mu, g)
+    devs = [k.w_fast_A / ref - 1, k.w_slow_A / ref - 1, k.u1 / ref - 1, k.u2 / ref - 1,
+            k.phi_B / (1.0 - eps0) - 1]
+    for e in (0.8, 0.9, 0.95):
+        w = masliyah_velocities([(d, 1500.0, 1.0 - e)], rho_f, mu, g)[0][0]
+        devs.append(w / di_felice_block_slip(d, 1500.0, rho_f, mu, e, g) - 1)
+    worst = max(abs(x) for x in devs)
+    if worst > 1e-9:
+        raise AssertionError(f"mixture model does not reduce to (4.4): deviations {devs}")
+    return worst
+
+
+if __name__ == "__main__":
+    v = di_felice_block_slip(1e-4, 2500, 1000, 8.9e-4, 0.9)
+    print(f"Di Felice block slip at eps=0.9: {v*1e3:.4f} mm/s "
+          f"(polynomial residual {di_felice_polynomial_residual(v, 1e-4, 2500, 1000, 8.9e-4, 0.9):.2e})")
+    s = StokesTransient(1e-4, 2500, 1000, 8.9e-4)
+    print(f"Stokes: v_T = {s.v_terminal*1e3:.4f} mm/s, t_d = {s.t_relax*1e3:.4f} ms")
+    u, ut, ret, n = richardson_zaki(1e-4, 2500, 1000, 8.9e-4, 0.9)
+    print(f"R-Z: u_t = {ut*1e3:.4f} mm/s, Re_t = {ret:.4f}, n = {n:.4f}, u = {u*1e3:.4f} mm/s")
+    print(f"eps=0.8 block: {di_felice_block_slip(1e-4, 2500, 1000, 8.9e-4, 0.8)*1e3:.4f} mm/s")
+    print(f"mixture model, equal densities against (4.4): largest deviation {mixture_self_check():.1e}")
+    k = TwoSpeciesKynch((1e-4, 2450, 0.05), (1e-4, 1500, 0.05), 1000, 8.9e-4)
+    print(f"two densities (2450/1500, eps0 = 0.9): rho_susp = {k.rho_susp:.1f} kg/m3, heavy/light in the "
+          f"mixture {k.w_fast_A*1e3:.4f}/{k.w_slow_A*1e3:.4f} mm/s; heavy front U1 = {k.u1*1e3:.4f} mm/s, "
+          f"light-only zone eps_B = {k.eps_B:.4f}, light front U2 = {k.u2*1e3:.4f} mm/s")
