@@ -106,6 +106,19 @@ struct DoubleSmoothingSpec {
   double h_over_d = 1.5;
 };
 
+// How the fluid pressure couples fluid and spheres.
+//  interpolated (thesis 2.68-2.71): each sphere gets V_j (-grad P + div tau) interpolated
+//    from the fluid's SPH acceleration, and the fluid gets it back with the drag, as the
+//    mean over one SPH step. Where the voidage varies strongly (eps < ~0.75 next to clear
+//    fluid: a packed bed) the fluid's SPH pressure term and the returned share do not
+//    cancel at the kernel scale and the fluid is linearly unstable (ARCHITECTURE.md).
+//  variational: the pressure forces derive from the fluid's internal energy
+//    sum_a m_a e(rho_a / eps_a): the SPH pressure term carries eps P, the fluid gets
+//    V_a P_a grad eps_a and the spheres the exact opposite, pair by pair, at once (so
+//    rho_sup Du/Dt = -eps grad P, model A); only the drag goes through the step mean.
+//    The viscous stress on the spheres, V div tau, is left out (it stays in the fluid).
+enum class PressureCoupling { kInterpolated, kVariational };
+
 struct Scene {
   std::string name = "scene";
   std::string description;
@@ -119,6 +132,7 @@ struct Scene {
   drag::DragLaw drag = drag::Stokes{};
   double voidage_floor = 0.3;
   DoubleSmoothingSpec double_smoothing;
+  PressureCoupling pressure_coupling = PressureCoupling::kInterpolated;
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;

@@ -529,6 +529,17 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       for (const char* k : {"big_species", "big_h_over_d"})
         if (r.has(k)) r.fail(r.key(k), "applies only with voidage_smoothing: double");
     }
+    const std::string pc = r.choice("pressure_coupling", "interpolated", {"interpolated", "variational"});
+    if (pc == "variational") {
+      sc.pressure_coupling = PressureCoupling::kVariational;
+      if (sc.double_smoothing.enabled)
+        r.fail(r.key("pressure_coupling"), "variational needs voidage_smoothing: single (the gradient of the "
+                                           "double-smoothed voidage is not implemented)");
+      for (std::size_t i = 0; i < sc.particles.size(); ++i)
+        if (sc.particles[i].rigid)
+          r.fail(r.key("pressure_coupling"),
+                 fmt::format("variational does not apply to rigid groups (particles.{}.rigid: true)", i));
+    }
     r.finish();
   }
   {
@@ -749,7 +760,8 @@ std::string scene_to_yaml(const Scene& sc) {
     << drag::drag_law_name(sc.drag) << YAML::EndMap;
   e << YAML::Key << "coupling" << YAML::Value << YAML::BeginMap << YAML::Key << "voidage_floor" << YAML::Value
     << sc.voidage_floor << YAML::Key << "voidage_smoothing" << YAML::Value
-    << (sc.double_smoothing.enabled ? "double" : "single");
+    << (sc.double_smoothing.enabled ? "double" : "single") << YAML::Key << "pressure_coupling" << YAML::Value
+    << (sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated");
   if (sc.double_smoothing.enabled)
     e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species << YAML::Key
       << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;

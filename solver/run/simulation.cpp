@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "coupling/fluid_force.hpp"
+#include "coupling/pressure_coupling.hpp"
 #include "coupling/interpolation.hpp"
 #include "coupling/reaction.hpp"
 #include "coupling/double_smoothing.hpp"
@@ -286,7 +287,8 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   fluid_halo_.fill(f.eps);
   lap(kVoidage);
   update_pressure();
-  omega_bounded_ = compute_density_rate(f, fluid_pairs_, pair_scratch_);
+  const bool variational = scene_.pressure_coupling == PressureCoupling::kVariational;
+  omega_bounded_ = compute_density_rate(f, fluid_pairs_, pair_scratch_, variational);
   fluid_halo_.fill(f.omega);
   fluid_halo_.fill(f.p_term);
   lap(kDensity);
@@ -294,19 +296,6 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
                              MomentumParams{scene_.fluid.viscosity, scene_.fluid.alpha_artificial, scene_.time.cfl},
                              pair_scratch_);
   for (auto* v : {&f.thx, &f.thy, &f.thz}) fluid_halo_.fill(*v);
-  lap(kMomentum);
-  interpolate_fluid_at_spheres(s, f, sphere_pairs_, dem_halo_.source(), sphere_scratch_);
-  lap(kInterp);
-  if (hold_spheres) {
-    // Held spheres: the force they feel now is what the fluid gets back.
-    dem_forces(false, 0.0);
-    for (std::size_t j = 0; j < s.n_owned; ++j) {
-      s.fmx[j] = s.fx[j];
-      s.fmy[j] = s.fy[j];
-      s.fmz[j] = s.fz[j];
-    }
-  }
-  for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard}) dem_halo_.fill(*v);
   const auto& g = scene_.gravity;
   const long n = static_cast<long>(f.n_owned);
 #pragma omp parallel for schedule(static)
@@ -316,8 +305,51 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
     f.ay[a] = mobile ? f.thy[a] + g[1] : 0.0;
     f.az[a] = mobile ? f.thz[a] + g[2] : 0.0;
   }
+  lap(kMomentum);
+  interpolate_fluid_at_spheres(s, f, sphere_pairs_, dem_halo_.source(), sphere_scratch_);
+  if (variational) apply_variational_pressure(hold_spheres);
+  lap(kInterp);
+  if (hold_spheres) {
+    // Held spheres: the force they feel now is what the fluid gets back (with the
+    // variational coupling the pressure part has been returned already, pair by pair).
+    dem_forces(false, 0.0);
+    for (std::size_t j = 0; j < s.n_owned; ++j) {
+      const double vp = variational ? s.volume(j) : 0.0;
+      s.fmx[j] = s.fx[j] - vp * s.gx[j];
+      s.fmy[j] = s.fy[j] - vp * s.gy[j];
+      s.fmz[j] = s.fz[j] - vp * s.gz[j];
+    }
+  }
+  for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard}) dem_halo_.fill(*v);
   add_reaction_on_fluid(f, s, sphere_pairs_);
   lap(kReaction);
+}
+
+// Variational pressure coupling (coupling/pressure_coupling.hpp): the fluid gets its
+// share now, the spheres' g becomes their pressure force / V. Between two evaluations
+// a sphere must feel one constant pressure force, so that what it receives over the
+// window of the step mean is what the fluid got: the force and acceleration of the last
+// sub-step (the 'old' ones of the next trapezoid) switch to the new g here.
+void Simulation::apply_variational_pressure(bool hold_spheres) {
+  DemParticles& s = dem_;
+  const long n = static_cast<long>(s.n_owned);
+  g_old_x_.assign(s.gx.begin(), s.gx.begin() + n);
+  g_old_y_.assign(s.gy.begin(), s.gy.begin() + n);
+  g_old_z_.assign(s.gz.begin(), s.gz.begin() + n);
+  couple_pressure_variationally(fluid_, s, sphere_pairs_, dem_halo_.source(), sphere_scratch_);
+  if (hold_spheres) return;
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
+  for (long j = 0; j < n; ++j) {
+    const double V = s.volume(j), inv_m = 1.0 / s.mass[j];
+    const double dfx = V * (s.gx[j] - g_old_x_[j]), dfy = V * (s.gy[j] - g_old_y_[j]),
+                 dfz = V * (s.gz[j] - g_old_z_[j]);
+    s.fx[j] += dfx;
+    s.fy[j] += dfy;
+    s.fz[j] += dfz;
+    s.ax[j] += dfx * inv_m;
+    s.ay[j] += dfy * inv_m;
+    s.az[j] += dfz * inv_m;
+  }
 }
 
 // Fluid force (2.68) and contact force (2.36, with the tangential and rolling parts of
@@ -331,6 +363,7 @@ void Simulation::dem_forces(bool accumulate_mean, double weight, double dt_sprin
   if (s.n_owned == 0) return;
   compute_contact_forces(s, contacts_, contact_law_, contact_history_, dem_halo_.images(), 0.0, dt_springs);
   const long n = static_cast<long>(s.n_owned);
+  const bool variational = scene_.pressure_coupling == PressureCoupling::kVariational;
   const auto& g = scene_.gravity;
   std::visit(
       [&](const auto& law) {
@@ -339,9 +372,11 @@ void Simulation::dem_forces(bool accumulate_mean, double weight, double dt_sprin
           double fx, fy, fz;
           fluid_force_on_sphere(s, j, law, drag_fluid_, fx, fy, fz);
           if (accumulate_mean) {  // trapezoidal impulse of this sub-step: 0.5 dt (f_old + f_new)
-            s.fmx[j] += weight * (s.fx[j] + fx);
-            s.fmy[j] += weight * (s.fy[j] + fy);
-            s.fmz[j] += weight * (s.fz[j] + fz);
+            // (with the variational coupling the constant pressure part 2 V g is not in it)
+            const double vp2 = variational ? 2.0 * s.volume(j) : 0.0;
+            s.fmx[j] += weight * (s.fx[j] + fx - vp2 * s.gx[j]);
+            s.fmy[j] += weight * (s.fy[j] + fy - vp2 * s.gy[j]);
+            s.fmz[j] += weight * (s.fz[j] + fz - vp2 * s.gz[j]);
           }
           s.fx[j] = fx;
           s.fy[j] = fy;

@@ -106,6 +106,7 @@ class Simulation {
   void compute_fluid_side(bool hold_spheres);
   void dem_half(double dt, bool first_half);
   void dem_forces(bool accumulate_mean, double weight, double dt_springs = 0.0);
+  void apply_variational_pressure(bool hold_spheres);
   void check_finite() const;
   double fluid_cutoff() const;
   void next_dt();
@@ -133,6 +134,7 @@ class Simulation {
   bool rotation_ = false;  // tangential or rolling parts: history and spin on
   std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
   std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // sphere accelerations of the previous sub-step
+  std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // spheres' g before a variational coupling pass
   OldTorque torque_old_;                              // sphere torques of the previous sub-step
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
   int n_groups_ = 0;

@@ -9,9 +9,12 @@ namespace sphdem {
 // from a half neighbour list (each owned pair once, added to both; the self term added here):
 //   Omega_a = 1 - (dh/drho) sum_b m_b dW_ab(h_a)/dh,  dh/drho = -h/(3 rho)      (2.54)
 //   drho_a/dt = (1/Omega_a) sum_b m_b u_ab . grad_a W_ab(h_a)                      (2.53)
-// Also stores p_term = P/(Omega rho^2) for the momentum pass (P must be current).
+// Also stores p_term = P/(Omega rho^2) for the momentum pass (P must be current), or
+// eps P/(Omega rho^2) with voidage_weighted_pressure (the variational pressure coupling,
+// coupling/pressure_coupling.hpp: eps P = rho^2 de/drho of the superficial density).
 // Omega is kept within [0.5, 2] (it can drift near the free surface, where the kernel
 // sum is truncated); returns how many particles hit that bound.
-std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& scratch);
+std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& scratch,
+                                 bool voidage_weighted_pressure = false);
 
 }  // namespace sphdem
