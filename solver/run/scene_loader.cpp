@@ -530,16 +530,10 @@ Scene parse(const YAML::Node& root, const std::string& file) {
         if (r.has(k)) r.fail(r.key(k), "applies only with voidage_smoothing: double");
     }
     const std::string pc = r.choice("pressure_coupling", "interpolated", {"interpolated", "variational"});
-    if (pc == "variational") {
-      sc.pressure_coupling = PressureCoupling::kVariational;
-      if (sc.double_smoothing.enabled)
-        r.fail(r.key("pressure_coupling"), "variational needs voidage_smoothing: single (the gradient of the "
-                                           "double-smoothed voidage is not implemented)");
-      for (std::size_t i = 0; i < sc.particles.size(); ++i)
-        if (sc.particles[i].rigid)
-          r.fail(r.key("pressure_coupling"),
-                 fmt::format("variational does not apply to rigid groups (particles.{}.rigid: true)", i));
-    }
+    sc.pressure_coupling = pc == "variational" ? PressureCoupling::kVariational : PressureCoupling::kInterpolated;
+    if (sc.pressure_coupling == PressureCoupling::kVariational && sc.double_smoothing.enabled)
+      r.fail(r.key("pressure_coupling"), "variational needs voidage_smoothing: single (the gradient of the "
+                                         "double-smoothed voidage is not implemented); use interpolated");
     r.finish();
   }
   {

@@ -346,9 +346,31 @@ void Simulation::apply_variational_pressure(bool hold_spheres) {
     s.fx[j] += dfx;
     s.fy[j] += dfy;
     s.fz[j] += dfz;
+    if (s.rigid_group[j] >= 0) continue;  // below: the group's share
     s.ax[j] += dfx * inv_m;
     s.ay[j] += dfy * inv_m;
     s.az[j] += dfz * inv_m;
+  }
+  if (n_groups_ == 0) return;
+  std::fill(group_fx_.begin(), group_fx_.end(), 0.0);
+  std::fill(group_fy_.begin(), group_fy_.end(), 0.0);
+  std::fill(group_fz_.begin(), group_fz_.end(), 0.0);
+  std::fill(group_m_.begin(), group_m_.end(), 0.0);
+  for (long j = 0; j < n; ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    const double V = s.volume(j);
+    group_fx_[gr] += V * (s.gx[j] - g_old_x_[j]);
+    group_fy_[gr] += V * (s.gy[j] - g_old_y_[j]);
+    group_fz_[gr] += V * (s.gz[j] - g_old_z_[j]);
+    group_m_[gr] += s.mass[j];
+  }
+  for (long j = 0; j < n; ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    s.ax[j] += group_fx_[gr] / group_m_[gr];
+    s.ay[j] += group_fy_[gr] / group_m_[gr];
+    s.az[j] += group_fz_[gr] / group_m_[gr];
   }
 }
 
