@@ -1,6 +1,6 @@
 // Sand column (Zhao, Houlsby & Utili 2014), reduced (cases/sand_column_reduced.yaml):
 // the excess pore pressure at the base against eq. 15, the segregation of the coarse
-// grains to the base, and the bulk density of the bed (reported).
+// grains to the base, and the bulk density of the bed against Zhao's 1965 kg/m^3.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -121,16 +121,20 @@ class SandColumn : public ::testing::Test {
 };
 SandColumnRun SandColumn::run_;
 
-// Measured when written (seed 2014, 1 thread): this FAILS. The period mean follows eq. 15
-// while the suspension settles (0.138 at 10 ms, 0.185 at 20 ms against 0.1815) but goes
-// on rising as the layer at the wall forms (0.39 at 50 ms, 0.79 at 0.15 s; raw values
-// from -2.3 to 4.6) instead of dissipating: the base carries more than the whole
-// suspension's weight. Higher in the column the excess is linear in z as Zhao's
-// isochrones. The wall particles' pressure stays below the first fluid layer's (by
-// ~0.4 rho_f g H at 0.1 s), and the layer on the wall never comes to rest (see
-// BedBulkDensityReported). With 2 threads: 4.45 x eq. 15. The tolerance is the issue's;
-// the defect is the solver's (issue 4 stays open), so the check is disabled, not widened:
-// run it with --gtest_also_run_disabled_tests.
+// Measured (seed 2014, variational pressure coupling): this FAILS, 3.09 x eq. 15 with 2
+// threads (3.13 with 1). The raw excess follows eq. 15 while the suspension settles
+// (0.117 at 11 ms, 0.182 at 16 ms, 0.15-0.19 up to 32 ms, against 0.1815), then rises as
+// the bed forms on the wall (0.43 at 50 ms, period mean 0.56 at 0.19 s) and stays at
+// 0.36-0.38 when everything is at rest (0.6 s): a static offset the physics does not
+// have (a bed at rest carries its weight by contacts). What was found: the fluid in the
+// bed is compressed ~0.2 % above hydrostatic, and its SPH particles are disordered there
+// (partition of unity sum_b V_b W_ab = 0.88-0.92 in the bed, 1.04 just above it, 1.003
+// at the start), which lets a pressure jump across the bed's top stand in equilibrium.
+// What would remove it: particle shifting or a density re-initialisation in the bed,
+// and a wall whose pressure is extrapolated from the fluid (mDBC) rather than carried by
+// continuity. With the interpolated coupling the column stirred up instead (4.45 x; the
+// bed never came to rest). The tolerance is the issue's; the check stays disabled, not
+// widened: run it with --gtest_also_run_disabled_tests.
 TEST_F(SandColumn, DISABLED_PeakExcessPorePressureAtTheBaseMatchesEq15) {
   const SandColumnRun& r = run_;
   const double raw_max = *std::max_element(r.base.u.begin(), r.base.u.end());
@@ -141,10 +145,10 @@ TEST_F(SandColumn, DISABLED_PeakExcessPorePressureAtTheBaseMatchesEq15) {
   EXPECT_NEAR(r.smooth[r.k_peak] / r.u_theory, 1.0, 0.10);  // issue 4: within 10 % of eq. 15
 }
 
-// Not robust, so disabled: 3.1 x the random-mixture deviation with 1 thread (passes),
-// 2.1 x with 2 threads (fails; the summation order changes the agitated layer's history).
-// The layer never comes to rest (BedBulkDensityReported), so its sorting is not Zhao's.
-TEST_F(SandColumn, DISABLED_CoarseGrainsAtTheBase) {
+// Measured (seed 2014, variational pressure coupling, the bed at rest): 3.2 x the
+// random-mixture deviation with 2 threads, 3.5 x with 1 (bottom third 2.83 mm, top 2.72).
+// With the interpolated coupling the layer never came to rest: 3.1 x / 2.1 x.
+TEST_F(SandColumn, CoarseGrainsAtTheBase) {
   // Mean d of the bottom third against the top third. For a random mixture the
   // difference of two disjoint samples of n_b and n_t spheres has standard deviation
   // sigma_d sqrt(1/n_b + 1/n_t) (sigma_d = 0.58 mm for the uniform law on [1.8, 3.8] mm:
@@ -163,22 +167,18 @@ TEST_F(SandColumn, DISABLED_CoarseGrainsAtTheBase) {
   EXPECT_GT(diff, 3.0 * sd_random);
 }
 
-TEST_F(SandColumn, BedBulkDensityReported) {
+// Zhao et al. report 1965 kg/m^3 for the final sediment (n = 0.415). Random packings of
+// frictional spheres (mu = 0.577) settle at n = 0.40-0.45, 1907-1990 kg/m^3, i.e. within
+// 3 % of that value. Measured (seed 2014, 1 and 2 threads): the bed at rest (mean sphere
+// speed 2e-4 m/s at 0.6 s), profile maximum 1925 kg/m^3 (-2.0 %); the kernel (support
+// 16.7 mm against a 22 mm bed) smooths the bed with the clear water above, so this is
+// biased low. The solid under the highest sphere's top gives 1807-1819 kg/m^3 (biased
+// low by the rough top, up to half a grain layer).
+TEST_F(SandColumn, BedBulkDensityMatchesZhao) {
   const SandColumnRun& r = run_;
   std::printf("end: mean sphere speed %.3g m/s, fastest %.3g m/s, bed top %.4g m; bed bulk density %.0f kg/m^3 "
               "(solid under the top), %.0f kg/m^3 (profile max); Zhao: 1965 kg/m^3\n",
               r.v_mean, r.v_max, r.z_top, r.rho_bed_solid, r.rho_profile_max);
-  // Reported, not tested. What was found (seed 2014, 1 thread): at 0.6 s all the spheres
-  // are below 33 mm but they have not come to rest: mean speed 0.16 m/s, 548 contacts
-  // for 2115 spheres and 2 on the wall (contact_network.csv), so the layer is agitated
-  // by the fluid rather than a bed held by contacts, and 1558 / 1799 kg/m^3 are not a
-  // sediment's bulk density. Even settled, the reduced bed (~11 grains thick, twice the
-  // kernel support, with a rough top a sizeable part of it) would give no interior value
-  // to hold against Zhao's 1965 kg/m^3.
-  // A layer formed on the wall: denser than the initial suspension by at least a quarter
-  // of the way to solid grains (1548 kg/m^3; a bed at n = 0.42 would be 1957; measured
-  // 1799 with 1 thread, 1784 with 2), and no denser than the grains themselves.
-  const double rho_suspension = r.n0 * 1000.0 + (1.0 - r.n0) * 2650.0;
-  EXPECT_GT(r.rho_profile_max, rho_suspension + 0.25 * (2650.0 - rho_suspension));
-  EXPECT_LT(r.rho_profile_max, 2650.0);
+  EXPECT_LT(r.v_mean, 0.01);  // the bed has come to rest (a falling grain moves at ~0.2 m/s)
+  EXPECT_NEAR(r.rho_profile_max / 1965.0, 1.0, 0.03);
 }
