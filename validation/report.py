@@ -14,6 +14,7 @@ Exit code 0 when every row with a target meets it, 1 otherwise (also when a run 
 import argparse
 import csv
 import datetime
+import hashlib
 import json
 import math
 import os
@@ -49,8 +50,11 @@ class Run:
             # only the reduced data the report reads: no rendering, so no Xvfb needed
             self.sets.setdefault("insitu.pipelines", "[voidage_height, interfaces]")
 
+    def case_path(self):
+        return os.path.join(REPO, self.case)
+
     def command(self, sphdem, out_dir):
-        cmd = [sphdem, "run", os.path.join(REPO, self.case), "--out", out_dir]
+        cmd = [sphdem, "run", self.case_path(), "--out", out_dir]
         for k, v in self.sets.items():
             cmd += ["--set", f"{k}={v}"]
         if not self.insitu:
@@ -128,9 +132,14 @@ def execute(run, sphdem, runs_dir, reuse, nice):
     out_dir = os.path.join(runs_dir, run.key)
     cmd = run.command(sphdem, out_dir)
     stamp = os.path.join(out_dir, "report_run.json")
+    case_sha = hashlib.sha256(open(run.case_path(), "rb").read()).hexdigest()
     if reuse and os.path.exists(stamp):
         meta = json.load(open(stamp))
-        if same_command(meta.get("cmd"), cmd):
+        # the scene file must be the one the run read: its hash, or (records made before
+        # the hash was kept) not modified since the run
+        same_case = (meta["case_sha256"] == case_sha if "case_sha256" in meta
+                     else os.path.getmtime(run.case_path()) <= os.path.getmtime(stamp))
+        if same_case and same_command(meta.get("cmd"), cmd):
             print(f"[report] reuse {run.key} ({meta['wall']:.1f} s)", flush=True)
             return RunResult(run, out_dir, meta["wall"], meta["returncode"], cmd)
     os.makedirs(out_dir, exist_ok=True)
@@ -140,7 +149,7 @@ def execute(run, sphdem, runs_dir, reuse, nice):
     with open(os.path.join(out_dir, "sphdem.out"), "w") as fh:
         rc = subprocess.call(full, stdout=fh, stderr=subprocess.STDOUT)
     wall = time.perf_counter() - t0
-    json.dump({"cmd": cmd, "wall": wall, "returncode": rc}, open(stamp, "w"))
+    json.dump({"cmd": cmd, "wall": wall, "returncode": rc, "case_sha256": case_sha}, open(stamp, "w"))
     print(f"[report]   {run.key}: exit {rc}, {wall:.1f} s", flush=True)
     return RunResult(run, out_dir, wall, rc, cmd)
 

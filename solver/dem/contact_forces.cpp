@@ -29,6 +29,7 @@ void ContactNeighbourList::build(const DemParticles& s, const CellList& cells, d
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
                             const LinearSpringDashpot& law, double wall_z) {
   const long n = static_cast<long>(s.n_owned);
+  const double bf = law.beta_factor();
 #pragma omp parallel for schedule(static) if (n > 256)  // a parallel region costs more than a few spheres
   for (long i = 0; i < n; ++i) {
     double fx = 0, fy = 0, fz = 0, dmax = 0;
@@ -45,7 +46,7 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
       // d(delta)/dt = -(v_i - v_j) . n
       const double ddelta = -((s.vx[i] - s.vx[j]) * nx + (s.vy[i] - s.vy[j]) * ny + (s.vz[i] - s.vz[j]) * nz);
       const double m12 = mi * s.mass[j] / (mi + s.mass[j]);
-      const double fn = law.normal_force(delta, ddelta, law.beta_for(m12));
+      const double fn = law.normal_force(delta, ddelta, law.beta_for(m12, bf));
       fx += fn * nx;
       fy += fn * ny;
       fz += fn * nz;
@@ -53,7 +54,7 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
     }
     const double dw = ri - (s.z[i] - wall_z);  // flat bottom wall, normal +z
     if (dw > 0.0) {
-      fz += law.normal_force(dw, -s.vz[i], law.beta_for(mi));
+      fz += law.normal_force(dw, -s.vz[i], law.beta_for(mi, bf));
       dmax = std::max(dmax, dw);
     }
     s.cx[i] = fx;
@@ -74,6 +75,7 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, c
   if (history.pair.size() != list.neighbour.size() || history.wall.size() != n_owned)
     throw std::logic_error("compute_contact_forces: the contact history is not loaded for this list");
   const long n = static_cast<long>(n_owned);
+  const double bf = law.beta_factor();
 #pragma omp parallel for schedule(static) if (n > 256)  // as the normal-only pass
   for (long i = 0; i < n; ++i) {
     double fx = 0, fy = 0, fz = 0, qx = 0, qy = 0, qz = 0, dmax = 0;
@@ -111,7 +113,7 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, c
       const double vrx = s.vx[a] - s.vx[b], vry = s.vy[a] - s.vy[b], vrz = s.vz[a] - s.vz[b];
       const double ma = s.mass[a], mb = s.mass[b];
       const double m12 = ma * mb / (ma + mb);
-      const double fn = law.normal_force(delta, -(vrx * nv[0] + vry * nv[1] + vrz * nv[2]), law.beta_for(m12));
+      const double fn = law.normal_force(delta, -(vrx * nv[0] + vry * nv[1] + vrz * nv[2]), law.beta_for(m12, bf));
       const double fn_abs = std::abs(fn);
       // velocity of a relative to b at the contact point: v_a - v_b - (c_a w_a + c_b w_b) x n
       const double ca = s.radius[a] - 0.5 * delta, cb = s.radius[b] - 0.5 * delta;
@@ -150,7 +152,7 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, c
     const double dw = ri - hw;
     ContactState& sw = history.wall[i];
     if (dw > 0.0) {
-      const double fn = law.normal_force(dw, -s.vz[i], law.beta_for(mi));
+      const double fn = law.normal_force(dw, -s.vz[i], law.beta_for(mi, bf));
       const double fn_abs = std::abs(fn);
       static constexpr double nz[3] = {0.0, 0.0, 1.0};
       const double vt[3] = {s.vx[i] - hw * s.wy[i], s.vy[i] + hw * s.wx[i], 0.0};

@@ -12,15 +12,19 @@ struct LinearSpringDashpot {
   double restitution = -1.0;    // if in (0,1]: beta chosen per contact from m12 (LIGGGHTS style)
   bool clip_attraction = false;  // true: normal force never pulls (LAMMPS gran/hooke)
 
-  // Dashpot for a pair of reduced mass m12.
-  double beta_for(double m12) const {
-    if (restitution <= 0.0) return beta;
+  // With a restitution, beta = 2 m12 eta, eta = a omega0 / sqrt(1 + a^2), a = -ln(e)/pi
+  // (2.46), omega0 = sqrt(k/m12): beta = beta_factor() sqrt(k m12). The factor is the
+  // same for every contact, so a contact pass takes it once (a log and a square root)
+  // and pays one square root per contact. Negative: the fixed dashpot 'beta'.
+  double beta_factor() const {
+    if (restitution <= 0.0) return -1.0;
     if (restitution >= 1.0) return 0.0;
     const double a = -std::log(restitution) / M_PI;  // eta/omega
-    const double omega0 = std::sqrt(k / m12);
-    const double eta = a * omega0 / std::sqrt(1.0 + a * a);
-    return 2.0 * m12 * eta;
+    return 2.0 * a / std::sqrt(1.0 + a * a);
   }
+  // Dashpot for a pair of reduced mass m12, given beta_factor().
+  double beta_for(double m12, double factor) const { return factor < 0.0 ? beta : factor * std::sqrt(k * m12); }
+  double beta_for(double m12) const { return beta_for(m12, beta_factor()); }
   // Scalar normal force (positive = repulsive) for overlap delta and overlap rate ddelta.
   double normal_force(double delta, double ddelta, double beta_pair) const {
     const double f = k * delta + beta_pair * ddelta;
