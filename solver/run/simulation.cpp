@@ -325,6 +325,27 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   lap(kReaction);
 }
 
+// Sums force(j) over the spheres of each rigid group into group_f*_, and their masses
+// into group_m_.
+template <class Force>
+void Simulation::sum_over_rigid_groups(Force force) {
+  const DemParticles& s = dem_;
+  std::fill(group_fx_.begin(), group_fx_.end(), 0.0);
+  std::fill(group_fy_.begin(), group_fy_.end(), 0.0);
+  std::fill(group_fz_.begin(), group_fz_.end(), 0.0);
+  std::fill(group_m_.begin(), group_m_.end(), 0.0);
+  for (long j = 0; j < static_cast<long>(s.n_owned); ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    double fx, fy, fz;
+    force(j, fx, fy, fz);
+    group_fx_[gr] += fx;
+    group_fy_[gr] += fy;
+    group_fz_[gr] += fz;
+    group_m_[gr] += s.mass[j];
+  }
+}
+
 // Variational pressure coupling (coupling/pressure_coupling.hpp): the fluid gets its
 // share now, the spheres' g becomes their pressure force / V. Between two evaluations
 // a sphere must feel one constant pressure force, so that what it receives over the
@@ -352,19 +373,12 @@ void Simulation::apply_variational_pressure(bool hold_spheres) {
     s.az[j] += dfz * inv_m;
   }
   if (n_groups_ == 0) return;
-  std::fill(group_fx_.begin(), group_fx_.end(), 0.0);
-  std::fill(group_fy_.begin(), group_fy_.end(), 0.0);
-  std::fill(group_fz_.begin(), group_fz_.end(), 0.0);
-  std::fill(group_m_.begin(), group_m_.end(), 0.0);
-  for (long j = 0; j < n; ++j) {
-    const int gr = s.rigid_group[j];
-    if (gr < 0) continue;
+  sum_over_rigid_groups([&](long j, double& fx, double& fy, double& fz) {
     const double V = s.volume(j);
-    group_fx_[gr] += V * (s.gx[j] - g_old_x_[j]);
-    group_fy_[gr] += V * (s.gy[j] - g_old_y_[j]);
-    group_fz_[gr] += V * (s.gz[j] - g_old_z_[j]);
-    group_m_[gr] += s.mass[j];
-  }
+    fx = V * (s.gx[j] - g_old_x_[j]);
+    fy = V * (s.gy[j] - g_old_y_[j]);
+    fz = V * (s.gz[j] - g_old_z_[j]);
+  });
   for (long j = 0; j < n; ++j) {
     const int gr = s.rigid_group[j];
     if (gr < 0) continue;
@@ -411,18 +425,11 @@ void Simulation::dem_forces(bool accumulate_mean, double weight, double dt_sprin
       },
       scene_.drag);
   if (n_groups_ == 0) return;
-  std::fill(group_fx_.begin(), group_fx_.end(), 0.0);
-  std::fill(group_fy_.begin(), group_fy_.end(), 0.0);
-  std::fill(group_fz_.begin(), group_fz_.end(), 0.0);
-  std::fill(group_m_.begin(), group_m_.end(), 0.0);
-  for (long j = 0; j < n; ++j) {
-    const int gr = s.rigid_group[j];
-    if (gr < 0) continue;
-    group_fx_[gr] += s.ax[j] * s.mass[j];
-    group_fy_[gr] += s.ay[j] * s.mass[j];
-    group_fz_[gr] += s.az[j] * s.mass[j];
-    group_m_[gr] += s.mass[j];
-  }
+  sum_over_rigid_groups([&](long j, double& fx, double& fy, double& fz) {
+    fx = s.ax[j] * s.mass[j];
+    fy = s.ay[j] * s.mass[j];
+    fz = s.az[j] * s.mass[j];
+  });
   for (long j = 0; j < n; ++j) {
     const int gr = s.rigid_group[j];
     if (gr < 0) continue;

@@ -107,6 +107,8 @@ class Simulation {
   void dem_half(double dt, bool first_half);
   void dem_forces(bool accumulate_mean, double weight, double dt_springs = 0.0);
   void apply_variational_pressure(bool hold_spheres);
+  template <class Force>
+  void sum_over_rigid_groups(Force force);
   void check_finite() const;
   double fluid_cutoff() const;
   void next_dt();
