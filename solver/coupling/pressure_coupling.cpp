@@ -9,7 +9,8 @@
 namespace sphdem {
 
 void couple_pressure_variationally(FluidParticles& f, DemParticles& s, const FluidSpherePairs& pairs,
-                                   const std::vector<std::uint32_t>& halo_source, PairAccumulator& acc) {
+                                   const std::vector<std::uint32_t>& halo_source, PairAccumulator& acc,
+                                   const HydrostaticPressure& ph) {
   const std::size_t ns = s.n_owned;
   const long nf = static_cast<long>(f.n_owned);
   acc.reset(ns, 3);
@@ -18,7 +19,8 @@ void couple_pressure_variationally(FluidParticles& f, DemParticles& s, const Flu
     const int t = omp_get_thread_num();
 #pragma omp for schedule(static)
     for (long a = 0; a < nf; ++a) {
-      const double inv_h = f.inv_h[a], vp = f.mass[a] / f.rho[a] * f.P[a];  // V_a P_a
+      const double p_dyn = f.P[a] - ph(f.z[a]);
+      const double inv_h = f.inv_h[a], vp = f.mass[a] / f.rho[a] * p_dyn;  // V_a P_a
       double gx = 0.0, gy = 0.0, gz = 0.0;  // sum_j V_j grad_a W_aj = -grad eps_a
       for (std::uint32_t k = pairs.list.begin(a); k < pairs.list.end(a); ++k) {
         const std::uint32_t j = pairs.list.neighbour[k];
@@ -35,17 +37,17 @@ void couple_pressure_variationally(FluidParticles& f, DemParticles& s, const Flu
         r[2] += vp * gf * dz;
       }
       if (f.kind[a] != kFluid) continue;
-      const double p_over_rho = f.P[a] / f.rho[a];
+      const double p_over_rho = p_dyn / f.rho[a];
       f.ax[a] -= p_over_rho * gx;
       f.ay[a] -= p_over_rho * gy;
-      f.az[a] -= p_over_rho * gz;
+      f.az[a] -= p_over_rho * gz + ph.gradient_z() * f.eps[a] / f.rho[a];  // -grad P_h / rho_intrinsic
     }
   }
 #pragma omp parallel for schedule(static)
   for (long j = 0; j < static_cast<long>(ns); ++j) {
     s.gx[j] = acc.sum(j, 0);  // sum_a V_a P_a grad_a W_aj: the pressure force / V_j
     s.gy[j] = acc.sum(j, 1);
-    s.gz[j] = acc.sum(j, 2);
+    s.gz[j] = acc.sum(j, 2) - ph.gradient_z();  // + the buoyancy -grad P_h
   }
 }
 

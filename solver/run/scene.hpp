@@ -117,6 +117,12 @@ struct DoubleSmoothingSpec {
 //    V_a P_a grad eps_a and the spheres the exact opposite, pair by pair, at once (so
 //    rho_sup Du/Dt = -eps grad P, model A); only the drag goes through the step mean.
 //    The viscous stress on the spheres, V div tau, is left out (it stays in the fluid).
+//  hydrostatic_split (variational only): the pair forces carry P - P_h(z), the departure
+//    from the hydrostatic pressure P_h = rho0 |g| (z_s - z), and P_h's own forces are
+//    added analytically (-grad P_h / rho_intrinsic on the fluid, rho0 |g| V on a sphere).
+//    Still the gradient of an energy, U + sum_a m_a P_h/rho_a' + sum_j V_j P_h(z_j), which
+//    differs from U by the constant integral of P_h; the kernel-sum errors of the pair
+//    forces then scale with P - P_h instead of the absolute P (coupling/pressure_coupling.hpp).
 enum class PressureCoupling { kInterpolated, kVariational };
 
 struct Scene {
@@ -133,6 +139,7 @@ struct Scene {
   double voidage_floor = 0.3;
   DoubleSmoothingSpec double_smoothing;
   PressureCoupling pressure_coupling = PressureCoupling::kInterpolated;
+  bool hydrostatic_split = false;
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;

@@ -534,6 +534,11 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     if (sc.pressure_coupling == PressureCoupling::kVariational && sc.double_smoothing.enabled)
       r.fail(r.key("pressure_coupling"), "variational needs voidage_smoothing: single (the gradient of the "
                                          "double-smoothed voidage is not implemented); use interpolated");
+    sc.hydrostatic_split = r.boolean("hydrostatic_split", false);
+    if (sc.hydrostatic_split && sc.pressure_coupling != PressureCoupling::kVariational)
+      r.fail(r.key("hydrostatic_split"), "true needs pressure_coupling: variational");
+    if (sc.hydrostatic_split && (sc.gravity[0] != 0.0 || sc.gravity[1] != 0.0 || sc.gravity[2] >= 0.0))
+      r.fail(r.key("hydrostatic_split"), "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
     r.finish();
   }
   {
@@ -755,7 +760,8 @@ std::string scene_to_yaml(const Scene& sc) {
   e << YAML::Key << "coupling" << YAML::Value << YAML::BeginMap << YAML::Key << "voidage_floor" << YAML::Value
     << sc.voidage_floor << YAML::Key << "voidage_smoothing" << YAML::Value
     << (sc.double_smoothing.enabled ? "double" : "single") << YAML::Key << "pressure_coupling" << YAML::Value
-    << (sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated");
+    << (sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated") << YAML::Key
+    << "hydrostatic_split" << YAML::Value << sc.hydrostatic_split;
   if (sc.double_smoothing.enabled)
     e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species << YAML::Key
       << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;

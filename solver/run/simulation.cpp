@@ -288,7 +288,7 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   lap(kVoidage);
   update_pressure();
   const bool variational = scene_.pressure_coupling == PressureCoupling::kVariational;
-  omega_bounded_ = compute_density_rate(f, fluid_pairs_, pair_scratch_, variational);
+  omega_bounded_ = compute_density_rate(f, fluid_pairs_, pair_scratch_, variational, hydrostatic_split());
   fluid_halo_.fill(f.omega);
   fluid_halo_.fill(f.p_term);
   lap(kDensity);
@@ -351,13 +351,18 @@ void Simulation::sum_over_rigid_groups(Force force) {
 // a sphere must feel one constant pressure force, so that what it receives over the
 // window of the step mean is what the fluid got: the force and acceleration of the last
 // sub-step (the 'old' ones of the next trapezoid) switch to the new g here.
+HydrostaticPressure Simulation::hydrostatic_split() const {
+  if (!scene_.hydrostatic_split) return {};
+  return HydrostaticPressure{eos_.rho0, scene_.gravity[2], scene_.fill_height()};
+}
+
 void Simulation::apply_variational_pressure(bool hold_spheres) {
   DemParticles& s = dem_;
   const long n = static_cast<long>(s.n_owned);
   g_old_x_.assign(s.gx.begin(), s.gx.begin() + n);
   g_old_y_.assign(s.gy.begin(), s.gy.begin() + n);
   g_old_z_.assign(s.gz.begin(), s.gz.begin() + n);
-  couple_pressure_variationally(fluid_, s, sphere_pairs_, dem_halo_.source(), sphere_scratch_);
+  couple_pressure_variationally(fluid_, s, sphere_pairs_, dem_halo_.source(), sphere_scratch_, hydrostatic_split());
   if (hold_spheres) return;
 #pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
   for (long j = 0; j < n; ++j) {

@@ -21,6 +21,7 @@
 #include "run/scene.hpp"
 #include "sph/equation_of_state.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/hydrostatic_pressure.hpp"
 #include "sph/pair_accumulator.hpp"
 
 namespace sphdem {
@@ -107,6 +108,7 @@ class Simulation {
   void dem_half(double dt, bool first_half);
   void dem_forces(bool accumulate_mean, double weight, double dt_springs = 0.0);
   void apply_variational_pressure(bool hold_spheres);
+  HydrostaticPressure hydrostatic_split() const;
   template <class Force>
   void sum_over_rigid_groups(Force force);
   void check_finite() const;

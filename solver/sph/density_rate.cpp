@@ -10,7 +10,7 @@
 namespace sphdem {
 
 std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& acc,
-                                 bool voidage_weighted_pressure) {
+                                 bool voidage_weighted_pressure, const HydrostaticPressure& ph) {
   const long n = static_cast<long>(f.n_owned);
   acc.reset(n, 2);  // per particle: sum_b m_b dW/dh, sum_b m_b u_ab . grad W
 #pragma omp parallel
@@ -57,7 +57,7 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
     }
     f.omega[a] = omega;
     f.drho[a] = acc.sum(a, 1) / omega;
-    f.p_term[a] = (voidage_weighted_pressure ? f.eps[a] : 1.0) * f.P[a] / (omega * f.rho[a] * f.rho[a]);
+    f.p_term[a] = (voidage_weighted_pressure ? f.eps[a] : 1.0) * (f.P[a] - ph(f.z[a])) / (omega * f.rho[a] * f.rho[a]);
   }
   return bounded;
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include "domain/neighbour_list.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/hydrostatic_pressure.hpp"
 #include "sph/pair_accumulator.hpp"
 
 namespace sphdem {
@@ -14,7 +15,9 @@ namespace sphdem {
 // coupling/pressure_coupling.hpp: eps P = rho^2 de/drho of the superficial density).
 // Omega is kept within [0.5, 2] (it can drift near the free surface, where the kernel
 // sum is truncated); returns how many particles hit that bound.
+// With a hydrostatic pressure ph, the pair term carries P - ph(z) instead of P (the
+// hydrostatic split of the variational coupling; ph's own force is added analytically).
 std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& scratch,
-                                 bool voidage_weighted_pressure = false);
+                                 bool voidage_weighted_pressure = false, const HydrostaticPressure& ph = {});
 
 }  // namespace sphdem

@@ -460,6 +460,16 @@ TEST(SceneErrors, GeometryOfTheFluidLattice) {
            {kFile, "'domain.size'", "periodic width 0.001", "4.8 smoothing_factor spacing"});
 }
 
+TEST(SceneErrors, HydrostaticSplitNeedsVariationalAndVerticalGravity) {
+  error_of(kBase + "coupling: {hydrostatic_split: true}\n",
+           {kFile, "'coupling.hydrostatic_split'", "pressure_coupling: variational"});
+  error_of(kBase + "gravity: [0.5, 0, -9.8]\ncoupling: {pressure_coupling: variational, hydrostatic_split: true}\n",
+           {kFile, "'coupling.hydrostatic_split'", "gravity along -z"});
+  const Scene sc = load_scene_text(kBase + "coupling: {pressure_coupling: variational, hydrostatic_split: true}\n", kFile);
+  EXPECT_TRUE(sc.hydrostatic_split);
+  EXPECT_FALSE(load_scene_text(kBase, kFile).hydrostatic_split);
+}
+
 TEST(SceneErrors, DampingAndRestitutionExclusive) {
   error_of(kBase + "contact: {damping: 1.0e-4, restitution: 0.5}\n",
            {kFile, "'contact.restitution'", "damping", "not both"});
