@@ -664,6 +664,11 @@ class BlockBidisperse:
     TARGET = 0.04
     PAIRS = {"150_100": "cases/block_bidisperse_150_100.yaml", "200_100": "cases/block_bidisperse_200_100.yaml"}
     DOUBLE = {"fluid.spacing": 2.0e-4, "coupling.voidage_smoothing": "double"}
+    VARIATIONAL = {"coupling.pressure_coupling": "variational"}
+    SPREAD = ("with the faces' error mostly gone (the monodisperse block: +0.5 % variational), what is left is "
+              "the spread of the voidage the spheres see (the kernel sampling the shuffled lattice) under "
+              "Beetstra's steep voidage dependence: the force balance with each sphere's voidage at release "
+              "predicts +5.8 % for 150/100 (tests/validation/bidisperse_block_validation.cpp)")
     SMEAR = ("the kernel-smeared block faces, as the monodisperse block, amplified by Beetstra's steeper voidage "
              "dependence: the force balance with each sphere's voidage at release predicts +5.8 % of the measured "
              "+7.3 % for 150/100 (tests/validation/bidisperse_block_validation.cpp); the rest is open")
@@ -681,6 +686,8 @@ class BlockBidisperse:
             else:
                 out.append(Run(f"block_{pair}_double", case, dict(base, **self.DOUBLE)))
                 out.append(Run(f"block_{pair}_classic", case, base))
+                # the variational pressure coupling (single smoothing only): the faces' share
+                out.append(Run(f"block_{pair}_classicvar", case, dict(base, **self.VARIATIONAL)))
         return out
 
     def evaluate(self, results, ctx):
@@ -703,12 +710,16 @@ class BlockBidisperse:
             slip = two_species_mean(r, "slip_z_mean", t0, t1)
             v = -two_species_mean(r, "vz_mean", t0, t1)
             double = key.endswith("double")
+            variational = key.endswith("classicvar")
             dx = r.case["fluid"]["spacing"]
             how = (f"double smoothing, h/d_small = {dx / small['diameter']:.3g}" if double
                    else f"classic, h/d_big = {dx / big['diameter']:.3g} (h/d_small = {dx / small['diameter']:.3g})")
+            if variational:
+                how += ", variational pressure coupling"
             rows.append(Row(self.name, f"{big['diameter'] * 1e6:.0f}/{small['diameter'] * 1e6:.0f} µm, {how}: mean slip, "
                                        f"ε = {eps:g}", f"{ref * 1e3:.4g} mm/s", "bidisperse block slip (4.5)",
-                            f"{slip * 1e3:.4g} mm/s", slip / ref - 1, self.TARGET, r, known=self.SMEAR))
+                            f"{slip * 1e3:.4g} mm/s", slip / ref - 1, self.TARGET, r,
+                            known=self.SPREAD if variational else self.SMEAR))
             eps_i = eps * slip / v
             ref_i = theory.bidisperse_block_slip(big["diameter"], small["diameter"], 0.5, big["density"], rho_f, mu,
                                                  eps_i, r.g())
@@ -790,8 +801,9 @@ class SuspensionOfTwoSpecies:
     TARGET = 0.08
     MIN_TRAVEL = 1.5   # layers of front_z a front must cross in the window for its line fit to be resolved
 
-    def __init__(self, name, case, reduced_width, two_sizes):
+    def __init__(self, name, case, reduced_width, two_sizes, full_end):
         self.name, self.case, self.width, self.two_sizes = name, case, reduced_width, two_sizes
+        self.full_end = full_end   # s: long enough for the slowest front to cross MIN_TRAVEL layers
         self.mode = "full"
 
     def runs(self, mode):
@@ -803,7 +815,7 @@ class SuspensionOfTwoSpecies:
             sets.update({"domain.size": f"[{w},{w},0.0036]", "particles.0.max": f"[{w},{w},0.0024]",
                          "contact.stiffness": 1, "time.dem_steps_per_contact": 10, "time.end": 0.035})
         else:
-            sets.update({"time.end": 0.06})
+            sets.update({"time.end": self.full_end})
         return [Run(self.name, self.case, sets, insitu=True)]
 
     def kynch(self, r, eps):
@@ -886,6 +898,9 @@ class SuspensionOfTwoSpecies:
                                        f"[{t_lo * 1e3:.1f}, {t_hi * 1e3:.1f}] ms", f"{u_ref * 1e3:.4g} mm/s", src,
                             f"{u * 1e3:.4g} mm/s", u / u_ref - 1, None if reduced else self.TARGET, r,
                             note=note, known=known))
+            if known and rows[-1].status == "PASS":   # within the target by chance: not a pass
+                rows[-1].status = "MISS"
+                rows[-1].note += "; within the target, but " + known
             if nm in thesis:
                 u_th, src_th = thesis[nm]
                 rows.append(Row(self.name, f"{nm} front (as above) against the thesis's reference", f"{u_th * 1e3:.4g} mm/s",
@@ -894,6 +909,8 @@ class SuspensionOfTwoSpecies:
                                      "voidage (the thesis measured -15 % and -31 % against it)"))
         if k is not None and com is not None and all(f"front_z:{nm}" in com for nm in names):
             rows += self.two_density_checks(r, com, k, names, dz, t_lo, t_hi)
+        elif com is not None and all(f"front_z:{nm}" in com for nm in refs):
+            rows += self.equal_phase_rows(r, com, {nm: (u, "(4.5)") for nm, (u, _) in refs.items()}, dz, t_lo)
         # segregation: the centres of mass separate in the expected order
         first, second = names
         dzc = r.log[f"com_z:{first}"] - r.log[f"com_z:{second}"]
@@ -904,14 +921,11 @@ class SuspensionOfTwoSpecies:
                         note="passes when the first species' centre of mass has fallen below the second's"))
         return rows
 
-    def two_density_checks(self, r, com, k, names, dz, t_lo, t_hi):
-        """Informative rows of the two-density scene that do not depend on the front_z
-        binning: each front's speed between equal phases of the layers, the distance
-        between the fronts (the light-only zone) against Kynch, and the mixture's solid
-        flux through a level inside the initial mixture (voidage map) against Masliyah."""
+    def equal_phase_rows(self, r, com, refs, dz, t_lo):
+        """Each front's speed between equal phases of the front_z layers (informative),
+        refs: {species: (reference speed, its source)}."""
         rows = []
         t = com["time"]
-        refs = {names[0]: (k.u1, "Masliyah + Di Felice, Kynch (K1)"), names[1]: (k.u2, "Masliyah + Di Felice, Kynch (K3)")}
         for nm, (u_ref, src) in refs.items():
             ep, since = equal_phase_speed(t, com[f"front_z:{nm}"], dz, t_lo), f"after {t_lo * 1e3:.0f} ms"
             if ep is None:   # less than a layer crossed after the start-up: from the release
@@ -925,6 +939,16 @@ class SuspensionOfTwoSpecies:
                                        f"[{ta * 1e3:.1f}, {tb * 1e3:.1f}] ms", f"{u_ref * 1e3:.4g} mm/s", src,
                             f"{u * 1e3:.4g} mm/s (range {u_min * 1e3:.3g}–{u_max * 1e3:.3g})", u / u_ref - 1, None, r,
                             note=f"free of the layer binning for a front of steady shape; {since}"))
+        return rows
+
+    def two_density_checks(self, r, com, k, names, dz, t_lo, t_hi):
+        """Informative rows of the two-density scene that do not depend on the front_z
+        binning: each front's speed between equal phases of the layers, the distance
+        between the fronts (the light-only zone) against Kynch, and the mixture's solid
+        flux through a level inside the initial mixture (voidage map) against Masliyah."""
+        t = com["time"]
+        refs = {names[0]: (k.u1, "Masliyah + Di Felice, Kynch (K1)"), names[1]: (k.u2, "Masliyah + Di Felice, Kynch (K3)")}
+        rows = self.equal_phase_rows(r, com, refs, dz, t_lo)
         # the light-only zone between the fronts: Kynch predicts it to widen at U1 - U2
         zh, zl = com[f"front_z:{names[0]}"], com[f"front_z:{names[1]}"]
         gap0, gap1 = zl[0] - zh[0], zl[-1] - zh[-1]
@@ -977,16 +1001,32 @@ class SandColumn:
             "on the wall and keeps a static offset (~0.37) once all is at rest: the bed's SPH particles are "
             "disordered (partition of unity 0.88-0.92), see tests/validation/sand_column_validation.cpp")
 
+    SPLIT = {"coupling.hydrostatic_split": "true"}
+    PORE_SPLIT = ("with the hydrostatic split the static offset is gone (the row below) and the peak is a "
+                  "transient of the bed's formation: the raw series follows eq. 15 to 30 ms, then oscillates "
+                  "(period ~48 ms, longer than the 4H/c0 = 28.6 ms of the mean) around a falling mean")
+
     def runs(self, mode):
-        return [] if mode == "reduced" else [Run("sand_column_reduced", self.case, {})]
+        if mode == "reduced":
+            return []
+        return [Run("sand_column_reduced", self.case, {}), Run("sand_column_reduced_split", self.case, self.SPLIT)]
 
     def evaluate(self, results, ctx):
         r = results.get("sand_column_reduced")
         if r is None:
             return [Row(self.name, "peak excess pore pressure, segregation, bed bulk density", "–", "–", "–", None,
                         None, None, skip="reduced mode: ctest sand_column_validation runs the reduced column")]
+        rows = self.rows_of(r, "sand_column_reduced", "", self.PORE, True)
+        split = results.get("sand_column_reduced_split")
+        if split is not None:
+            rows += self.rows_of(split, "sand_column_reduced_split", ", hydrostatic split (coupling.hydrostatic_split)",
+                                 self.PORE_SPLIT, False)
+        return rows
+
+    def rows_of(self, r, key, how, pore_known, primary):
+        """The rows of one run; those of a variant (primary False) only inform."""
         if not r.ok or r.log is None:
-            return failed_run_rows(self.name, r, "sand_column_reduced")
+            return failed_run_rows(self.name, r, key)
         rows = []
         sand = r.case["species"][0]
         rho_f = r.case["fluid"]["density"]
@@ -1000,9 +1040,15 @@ class SandColumn:
                            if min(t[-1], ti + period / 2) > max(t[0], ti - period / 2) else u[k]
                            for k, ti in enumerate(t)])
         k = int(np.argmax(smooth))
+        v_end = abs(r.log[f"vz_mean:{sand['name']}"][-1])
         rows.append(Row(self.name, f"peak excess pore pressure at the base / (ρf g H), mean over 4H/c0, at "
-                                   f"t = {t[k]:.3g} s", f"{u_th:.4f}", "Zhao et al. eq. 15: (1 − n)(ρs/ρf − 1)",
-                        f"{smooth[k]:.4f}", smooth[k] / u_th - 1, 0.10, r, known=self.PORE))
+                                   f"t = {t[k]:.3g} s{how}", f"{u_th:.4f}", "Zhao et al. eq. 15: (1 − n)(ρs/ρf − 1)",
+                        f"{smooth[k]:.4f}", smooth[k] / u_th - 1, 0.10 if primary else None, r,
+                        known=pore_known if primary else None, note="" if primary else pore_known))
+        rows.append(Row(self.name, f"excess pore pressure at the base / (ρf g H), mean over the last 4H/c0 (t = "
+                                   f"{t[-1]:.2g} s){how}", "0", "a bed at rest carries its weight by contacts",
+                        f"{smooth[-1]:.4f}", None, None, r,
+                        note=f"{smooth[-1] / u_th:.2f} × eq. 15; mean grain speed at the end {v_end * 1e3:.2g} mm/s"))
         th_path = os.path.join(r.dir, "size_thirds.csv")
         if os.path.exists(th_path):
             with open(th_path) as fh:   # first column: bottom, middle, top
@@ -1015,15 +1061,15 @@ class SandColumn:
             sd = (law["max"] - law["min"]) / math.sqrt(12.0) * math.sqrt(1 / count[0] + 1 / count[-1])
             diff = mean_d[0] - mean_d[-1]
             rows.append(Row(self.name, "mean grain diameter, bottom − top third, in units of a random mixture's "
-                                       f"deviation ({sd * 1e3:.3f} mm)", "> 3",
+                                       f"deviation ({sd * 1e3:.3f} mm){how}", "> 3",
                             "Zhao et al.: coarse grains at the base",
                             f"{diff / sd:+.2f} ({mean_d[0] * 1e3:.3f} / {mean_d[-1] * 1e3:.3f} mm)",
-                            3.0 / diff * sd if diff > 0 else float("inf"), 1.0, r, ratio=True))
+                            3.0 / diff * sd if diff > 0 else float("inf"), 1.0 if primary else None, r, ratio=True))
         bd = read_csv(os.path.join(r.dir, "bulk_density.csv"))
         if bd is not None:
-            rows.append(Row(self.name, "largest bulk density of the profile at the end", "1965 kg/m³",
+            rows.append(Row(self.name, f"largest bulk density of the profile at the end{how}", "1965 kg/m³",
                             "Zhao et al. (final sediment)", f"{np.max(bd['bulk_density']):.0f} kg/m³",
-                            np.max(bd["bulk_density"]) / 1965 - 1, 0.03, r,
+                            np.max(bd["bulk_density"]) / 1965 - 1, 0.03 if primary else None, r,
                             note="3 %: random packings of frictional spheres span n = 0.40-0.45; the kernel "
                                  "smooths the 22 mm bed with the water above (biased low)"))
         return rows
@@ -1059,8 +1105,9 @@ SCENES = [
     BlockMonodisperse(),
     SuspensionMonodisperse(),
     BlockBidisperse(),
-    SuspensionOfTwoSpecies("suspension_two_densities", "cases/suspension_two_densities.yaml", 0.002, False),
-    SuspensionOfTwoSpecies("suspension_bidisperse", "cases/suspension_bidisperse.yaml", 0.00198, True),
+    SuspensionOfTwoSpecies("suspension_two_densities", "cases/suspension_two_densities.yaml", 0.002, False, 0.06),
+    # 0.06 s left the small front 1.26 layers of travel (3.43 mm/s over 42 ms): 0.08 s gives ~2
+    SuspensionOfTwoSpecies("suspension_bidisperse", "cases/suspension_bidisperse.yaml", 0.00198, True, 0.08),
     SandColumn(),
 ]
 

@@ -130,9 +130,12 @@ SandColumnRun SandColumn::run_;
 // bed is compressed ~0.2 % above hydrostatic, and its SPH particles are disordered there
 // (partition of unity sum_b V_b W_ab = 0.88-0.92 in the bed, 1.04 just above it, 1.003
 // at the start), which lets a pressure jump across the bed's top stand in equilibrium.
-// What would remove it: particle shifting or a density re-initialisation in the bed,
-// and a wall whose pressure is extrapolated from the fluid (mDBC) rather than carried by
-// continuity. With the interpolated coupling the column stirred up instead (4.45 x; the
+// That jump is the kernel sums' error times the absolute pressure: with
+// coupling.hydrostatic_split (pair forces on P - P_h) the offset at rest is 0.013 and
+// the peak 1.59 x (2 threads), but the segregation check below then gave 2.2 deviations
+// (validation/README.md, session 4), so the case keeps it off. What is left of the peak
+// is an oscillation of period ~45-48 ms (not 4H/c0) while the bed forms.
+// With the interpolated coupling the column stirred up instead (4.45 x; the
 // bed never came to rest). The tolerance is the issue's; the check stays disabled, not
 // widened: run it with --gtest_also_run_disabled_tests.
 TEST_F(SandColumn, DISABLED_PeakExcessPorePressureAtTheBaseMatchesEq15) {
