@@ -346,16 +346,18 @@ void Simulation::sum_over_rigid_groups(Force force) {
   }
 }
 
-// Variational pressure coupling (coupling/pressure_coupling.hpp): the fluid gets its
-// share now, the spheres' g becomes their pressure force / V. Between two evaluations
-// a sphere must feel one constant pressure force, so that what it receives over the
-// window of the step mean is what the fluid got: the force and acceleration of the last
-// sub-step (the 'old' ones of the next trapezoid) switch to the new g here.
+// The hydrostatic pressure the variational coupling splits off (scene key
+// coupling.hydrostatic_split), the one of the hydrostatic start; zero without the key.
 HydrostaticPressure Simulation::hydrostatic_split() const {
   if (!scene_.hydrostatic_split) return {};
   return HydrostaticPressure{eos_.rho0, scene_.gravity[2], scene_.fill_height()};
 }
 
+// Variational pressure coupling (coupling/pressure_coupling.hpp): the fluid gets its
+// share now, the spheres' g becomes their pressure force / V. Between two evaluations
+// a sphere must feel one constant pressure force, so that what it receives over the
+// window of the step mean is what the fluid got: the force and acceleration of the last
+// sub-step (the 'old' ones of the next trapezoid) switch to the new g here.
 void Simulation::apply_variational_pressure(bool hold_spheres) {
   DemParticles& s = dem_;
   const long n = static_cast<long>(s.n_owned);
