@@ -17,9 +17,9 @@ void PeriodicHalo::build(const Box& box, double width, const double* x, const do
   for (int d = 0; d < 3; ++d) {
     if (!box.periodic[d]) continue;
     const double L = box.length(d);
-    if (2.0 * width > L)
+    if (width > L)  // one shift of +-L per axis reaches every image within width
       throw std::runtime_error("periodic box axis " + std::to_string(d) + " (" +
-                               std::to_string(L) + " m) is narrower than twice the halo width (" +
+                               std::to_string(L) + " m) is narrower than the halo width (" +
                                std::to_string(width) + " m)");
     // Images of owned particles and of the ghosts made along earlier axes (edges, corners).
     const std::size_t n_before = source_.size();

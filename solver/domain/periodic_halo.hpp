@@ -30,8 +30,9 @@ struct HaloImages {
 class PeriodicHalo {
  public:
   // Builds the ghost list: every owned particle within `width` of a periodic face
-  // gets an image on the far side (edges and corners included). Requires
-  // width <= box length / 2 on each periodic axis.
+  // gets an image on the far side (edges and corners included); with width > L/2 a
+  // particle near both faces gets both, so a cut-off above half the box finds every image
+  // within it, not only the nearest. Requires width <= box length on each periodic axis.
   void build(const Box& box, double width, const double* x, const double* y, const double* z,
              std::size_t n_owned);
 
