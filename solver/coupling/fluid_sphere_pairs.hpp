@@ -16,10 +16,11 @@ namespace sphdem {
 
 struct FluidSpherePairs {
   NeighbourList list;    // rows: owned SPH particles; entries: sphere indices
-  std::vector<double> w;  // W(r_aj, h_a) per entry (0 beyond 2 h_a)
+  std::vector<double> w;  // W(r_aj, H_a) per entry (0 beyond 2 H_a), H_a = scale h_a
+  double scale = 1.0;     // H_a / h_a (scene key coupling.sphere_kernel_scale)
 
-  // dem_cells bins the spheres (owned + halo) with a cut-off >= 2 max h.
-  void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells);
+  // dem_cells bins the spheres (owned + halo) with a cut-off >= 2 scale max h.
+  void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells, double kernel_scale = 1.0);
 };
 
 }  // namespace sphdem

@@ -539,6 +539,15 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       r.fail(r.key("hydrostatic_split"), "true needs pressure_coupling: variational");
     if (sc.hydrostatic_split && (sc.gravity[0] != 0.0 || sc.gravity[1] != 0.0 || sc.gravity[2] >= 0.0))
       r.fail(r.key("hydrostatic_split"), "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
+    sc.sphere_kernel_scale = r.number("sphere_kernel_scale", 1.0, 1.0, 3.0);
+    for (int d = 0; d < 2 && sc.fluid.enabled; ++d) {  // the spheres' halo reaches 2 H (with margin)
+      const double reach = 2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
+      if (sc.box.length(d) < reach)
+        r.fail(r.key("sphere_kernel_scale"),
+               fmt::format("{} needs a periodic width >= 2.4 sphere_kernel_scale smoothing_factor spacing = {} m "
+                           "(the spheres' kernel support with margin); domain.size gives {} m",
+                           sc.sphere_kernel_scale, reach, sc.box.length(d)));
+    }
     r.finish();
   }
   {
@@ -761,7 +770,8 @@ std::string scene_to_yaml(const Scene& sc) {
     << sc.voidage_floor << YAML::Key << "voidage_smoothing" << YAML::Value
     << (sc.double_smoothing.enabled ? "double" : "single") << YAML::Key << "pressure_coupling" << YAML::Value
     << (sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated") << YAML::Key
-    << "hydrostatic_split" << YAML::Value << sc.hydrostatic_split;
+    << "hydrostatic_split" << YAML::Value << sc.hydrostatic_split
+    << YAML::Key << "sphere_kernel_scale" << YAML::Value << sc.sphere_kernel_scale;
   if (sc.double_smoothing.enabled)
     e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species << YAML::Key
       << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;

@@ -208,7 +208,8 @@ void Simulation::rebuild_contact_neighbours() {
   s.resize(s.n_owned);
   // (the big spheres' own kernel of the double smoothing reaches further, plus the skin
   // they may move before the next rebuild)
-  const double halo = std::max({cell_size_, contact_cut, big_cutoff_ > 0 ? big_cutoff_ + skin : 0.0});
+  const double sphere_cell = scene_.sphere_kernel_scale * cell_size_;
+  const double halo = std::max({sphere_cell, contact_cut, big_cutoff_ > 0 ? big_cutoff_ + skin : 0.0});
   dem_halo_.build(box, halo, s.x.data(), s.y.data(), s.z.data(), s.n_owned);
   s.resize(s.n_owned + dem_halo_.n_ghost());
   dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
@@ -216,7 +217,7 @@ void Simulation::rebuild_contact_neighbours() {
   dem_halo_.fill(s.id);
   if (rotation_)
     for (auto* v : {&s.wx, &s.wy, &s.wz}) dem_halo_.fill(*v);
-  dem_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cell_size_, 2);
+  dem_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), sphere_cell, 2);
   if (s.n_owned > 0) {
     contact_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
     contacts_.build(s, contact_cells_, skin);
@@ -230,7 +231,7 @@ void Simulation::rebuild_contact_neighbours() {
 void Simulation::compute_voidage() {
   FluidParticles& f = fluid_;
   const DemParticles& s = dem_;
-  sphere_pairs_.build(f, s, dem_cells_);
+  sphere_pairs_.build(f, s, dem_cells_, scene_.sphere_kernel_scale);
   if (!scene_.double_smoothing.enabled) {
     voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, scene_.voidage_floor);
     return;

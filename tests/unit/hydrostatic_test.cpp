@@ -64,12 +64,14 @@ TEST(Hydrostatic, ColumnAtRestKeepsPressureHeightAndDensity) {
 }
 
 // With each pressure coupling (interpolated; variational; variational with the
-// hydrostatic split, where the buoyancy is analytic and the pairs carry P - P_h).
+// hydrostatic split, where the buoyancy is analytic and the pairs carry P - P_h; and
+// variational with the spheres' kernel twice the fluid's, coupling.sphere_kernel_scale).
 TEST(Hydrostatic, HeldSphereFeelsBuoyancy) {
   const std::vector<std::vector<std::string>> couplings = {
       {},
       {"coupling.pressure_coupling=variational"},
-      {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=true"}};
+      {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=true"},
+      {"coupling.pressure_coupling=variational", "coupling.sphere_kernel_scale=2"}};
   for (const auto& sets : couplings) {
     std::vector<std::string> all = sets;
     all.push_back("startup.relax_steps=200");
@@ -81,9 +83,10 @@ particles: [{type: single, species: glass, position: [0.0008, 0.0008, 0.003]}]
     sim.relax();
     const DemParticles& s = sim.spheres();
     const double buoyancy = s.volume(0) * sc.fluid.density * 9.81;
-    std::printf("%s%s: fluid force on the held sphere: (%.3g, %.3g, %.5g) N; V rho_f g = %.5g N\n",
-                sets.empty() ? "interpolated" : "variational", sets.size() > 1 ? " + split" : "", s.fx[0], s.fy[0],
-                s.fz[0], buoyancy);
+    std::string name = "interpolated";
+    for (const std::string& set : sets) name = set.substr(set.find('.') + 1) + (name == "interpolated" ? "" : ", " + name);
+    std::printf("%s: fluid force on the held sphere: (%.3g, %.3g, %.5g) N; V rho_f g = %.5g N\n", name.c_str(),
+                s.fx[0], s.fy[0], s.fz[0], buoyancy);
     // (2.68) at rest: V (-grad P) with grad P = rho_f g (the reaction keeps it so)
     EXPECT_NEAR(s.fz[0] / buoyancy, 1.0, 0.02);
     EXPECT_LT(std::hypot(s.fx[0], s.fy[0]) / buoyancy, 0.01);

@@ -460,6 +460,18 @@ TEST(SceneErrors, GeometryOfTheFluidLattice) {
            {kFile, "'domain.size'", "periodic width 0.001", "4.8 smoothing_factor spacing"});
 }
 
+TEST(SceneErrors, SphereKernelScaleInRangeAndWithinThePeriodicWidth) {
+  error_of(kBase + "coupling: {sphere_kernel_scale: 0.5}\n", {kFile, "'coupling.sphere_kernel_scale'", "[1, 3]"});
+  error_of(kBase + "coupling: {sphere_kernel_scale: 3.5}\n", {kFile, "'coupling.sphere_kernel_scale'", "[1, 3]"});
+  // 2.4 * 3 * 1.5 * 2e-4 = 2.16e-3 m > 1.6e-3 m (8 layers, enough for the fluid's own 1.44e-3 m)
+  const std::string narrow = edit(kBase, "position: [0.002, 0.002, 0.0048]", "position: [0.0008, 0.0008, 0.0048]") +
+                             "domain: {size: [0.0016, 0.0016, 0.006]}\n";
+  error_of(narrow + "coupling: {sphere_kernel_scale: 3}\n",
+           {kFile, "'coupling.sphere_kernel_scale'", "periodic width", "0.00216", "0.0016 m"});
+  EXPECT_DOUBLE_EQ(load_scene_text(narrow + "coupling: {sphere_kernel_scale: 2}\n", kFile).sphere_kernel_scale, 2.0);
+  EXPECT_DOUBLE_EQ(load_scene_text(kBase, kFile).sphere_kernel_scale, 1.0);
+}
+
 TEST(SceneErrors, HydrostaticSplitNeedsVariationalAndVerticalGravity) {
   error_of(kBase + "coupling: {hydrostatic_split: true}\n",
            {kFile, "'coupling.hydrostatic_split'", "pressure_coupling: variational"});
