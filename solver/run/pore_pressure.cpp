@@ -16,4 +16,11 @@ double excess_pore_pressure_base(const FluidParticles& f, const BasePorePressure
   return n > 0 ? sum / n : std::numeric_limits<double>::quiet_NaN();
 }
 
+double wall_load_base(const DemParticles& s, double k, double area, const BasePorePressure& b) {
+  double load = 0.0;
+  for (std::size_t i = 0; i < s.n_owned; ++i)
+    if (s.z[i] < s.radius[i]) load += k * (s.radius[i] - s.z[i]);
+  return load / (area * b.rho_f * b.g * b.H);
+}
+
 }  // namespace sphdem

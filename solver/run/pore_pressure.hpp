@@ -9,6 +9,7 @@
 // settle). The first layer is the mobile fluid particles with z < dx (the lattice puts
 // them at dx/2). Zero for water at rest; (1 - n)(rho_s/rho_f - 1) once a suspension of
 // porosity n filling the column is carried by the fluid (eq. 15).
+#include "dem/dem_particles.hpp"
 #include "sph/fluid_particles.hpp"
 
 namespace sphdem {
@@ -22,5 +23,13 @@ struct BasePorePressure {
 
 // NaN when the first layer holds no fluid particle.
 double excess_pore_pressure_base(const FluidParticles& f, const BasePorePressure& b);
+
+// The spheres' load on the bottom wall (z = 0) in the same unit: the elastic normal
+// force sum_i k max(0, r_i - z_i) over (area rho_f |g| H). It closes the column's
+// vertical momentum balance (solid + fluid, periodic sides): u_base + wall_load =
+// (1 - n)(rho_s/rho_f - 1) - (dM/dt) / (area rho_f |g| H), M the downward momentum of
+// the column, so a suspension in steady settling puts eq. 15 into u_base and a bed at
+// rest into wall_load. k is the normal stiffness of the linear contact law.
+double wall_load_base(const DemParticles& s, double k, double area, const BasePorePressure& b);
 
 }  // namespace sphdem

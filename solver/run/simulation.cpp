@@ -660,8 +660,10 @@ Diagnostics Simulation::diagnostics() const {
   d.dt_dem = dt_dem_;
   d.voidage_clamped = voidage_clamped_;
   d.omega_bounded = omega_bounded_;
-  d.excess_pore_pressure_base = excess_pore_pressure_base(
-      f, BasePorePressure{eos_.rho0, std::abs(scene_.gravity[2]), scene_.fill_height(), scene_.fluid.spacing});
+  const BasePorePressure base{eos_.rho0, std::abs(scene_.gravity[2]), scene_.fill_height(), scene_.fluid.spacing};
+  d.excess_pore_pressure_base = excess_pore_pressure_base(f, base);
+  const double k = std::visit([](const auto& law) { return law.normal.k; }, contact_law_);
+  d.wall_load_base = wall_load_base(s, k, scene_.box.length(0) * scene_.box.length(1), base);
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     if (f.kind[a] != kFluid) continue;
     d.fluid_mass += f.mass[a];

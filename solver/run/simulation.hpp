@@ -37,6 +37,7 @@ struct Diagnostics {
   double max_density_error = 0;  // max |rho/(eps rho0) - 1| over mobile fluid
   std::size_t voidage_clamped = 0, omega_bounded = 0;
   double excess_pore_pressure_base = 0;  // run/pore_pressure.hpp: u_base / (rho_f |g| H)
+  double wall_load_base = 0;             // run/pore_pressure.hpp: the spheres' load on the wall, same unit
   std::vector<double> vz_mean, slip_z_mean, com_z;  // per species
   std::vector<std::size_t> count;                    // spheres per species
 };

@@ -61,6 +61,14 @@ TEST(ExcessPorePressure, IsTheMeanOverTheFirstLayer) {
   EXPECT_NEAR(excess_pore_pressure_base(f, b), 500.0 / 1e4, 1e-12);
 }
 
+TEST(WallLoad, IsTheSpringForceOfTheSpheresTouchingTheWall) {
+  // overlaps 1 um and 3 um with the wall; the third sphere is clear of it
+  const DemParticles s = spheres({0.999e-3, 1.497e-3, 5e-3}, {2e-3, 3e-3, 2e-3});
+  const BasePorePressure b{1000.0, 10.0, 0.5, 0.01};
+  const double k = 200.0, area = 0.02 * 0.03;
+  EXPECT_NEAR(wall_load_base(s, k, area, b), k * 4e-6 / (area * 1000.0 * 10.0 * 0.5), 1e-15);
+}
+
 TEST(ContactNetwork, SpheresAtRestCarryKDeltaOncePerPair) {
   const Scene sc = load_scene_text(kTouching, "touching.yaml");
   Simulation sim(sc);
