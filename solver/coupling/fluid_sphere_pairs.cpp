@@ -14,7 +14,7 @@ void FluidSpherePairs::build(const FluidParticles& f, const DemParticles& s, con
   const long n = static_cast<long>(f.n_owned);
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {
-    const double inv_h = f.inv_h[a] / scale;
+    const double inv_h = inv_kernel_h(f, a);
     for (std::uint32_t k = list.begin(a); k < list.end(a); ++k) {
       const std::uint32_t j = list.neighbour[k];
       const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];

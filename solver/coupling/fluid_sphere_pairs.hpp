@@ -16,8 +16,17 @@ namespace sphdem {
 
 struct FluidSpherePairs {
   NeighbourList list;    // rows: owned SPH particles; entries: sphere indices
-  std::vector<double> w;  // W(r_aj, H_a) per entry (0 beyond 2 H_a), H_a = scale h_a
-  double scale = 1.0;     // H_a / h_a (scene key coupling.sphere_kernel_scale)
+  std::vector<double> w;  // W(r_aj, H_a) per entry (0 beyond 2 H_a)
+  double scale = 1.0;     // H_a / h_a of the mobile fluid (scene key coupling.sphere_kernel_scale)
+
+  // 1 / H_a: scale h_a for the mobile fluid, h_a for wall particles. A wall particle
+  // does not move: its superficial density follows only the fluid within its own 2 h_a,
+  // so a voidage reaching further (spheres 2 h_a-2 H_a away) would raise its intrinsic
+  // density with nothing to relieve it, and it would hold a sediment up by pressure
+  // (reduced sand column at 1.5 h: no sphere on the wall, wall load 0 instead of eq. 15).
+  double inv_kernel_h(const FluidParticles& f, std::size_t a) const {
+    return f.kind[a] == kWall ? f.inv_h[a] : f.inv_h[a] / scale;
+  }
 
   // dem_cells bins the spheres (owned + halo) with a cut-off >= 2 scale max h.
   void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells, double kernel_scale = 1.0);

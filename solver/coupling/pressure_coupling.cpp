@@ -20,7 +20,7 @@ void couple_pressure_variationally(FluidParticles& f, DemParticles& s, const Flu
 #pragma omp for schedule(static)
     for (long a = 0; a < nf; ++a) {
       const double p_dyn = f.P[a] - ph(f.z[a]);
-      const double inv_h = f.inv_h[a] / pairs.scale, vp = f.mass[a] / f.rho[a] * p_dyn;  // V_a P_a
+      const double inv_h = pairs.inv_kernel_h(f, a), vp = f.mass[a] / f.rho[a] * p_dyn;  // V_a P_a
       double gx = 0.0, gy = 0.0, gz = 0.0;  // sum_j V_j grad_a W_aj = -grad eps_a
       for (std::uint32_t k = pairs.list.begin(a); k < pairs.list.end(a); ++k) {
         const std::uint32_t j = pairs.list.neighbour[k];
