@@ -34,6 +34,22 @@ struct Config {
   double kernel_scale = 1.0;  // coupling.sphere_kernel_scale: the spheres' kernel H = scale h
 };
 
+// The sphere halo (reaching the spheres' kernel, scale x the fluid cut-off), the sphere
+// bins, the fluid-sphere pairs and the voidage, from the owned spheres' positions.
+void rebuild_sphere_side(Config& c) {
+  FluidParticles& f = c.f;
+  DemParticles& s = c.s;
+  s.resize(s.n_owned);
+  const double sphere_cutoff = c.cutoff * c.kernel_scale;
+  c.sh.build(c.box, sphere_cutoff, s.x.data(), s.y.data(), s.z.data(), s.n_owned);
+  s.resize(s.n_owned + c.sh.n_ghost());
+  c.sh.fill_positions(s.x.data(), s.y.data(), s.z.data());
+  c.sh.fill(s.radius);
+  c.scells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), sphere_cutoff, 2);
+  c.pairs.build(f, s, c.scells, c.kernel_scale);
+  compute_fluid_voidage(f, s, c.pairs, 0.05);
+}
+
 // A jittered fluid lattice (bottom layer = wall) and random spheres, some across
 // the periodic faces, with halos and cell lists built as Simulation does.
 void build(Config& c, int n_spheres, unsigned seed, double jitter = 0.1, double kernel_scale = 1.0) {
@@ -84,15 +100,8 @@ void build(Config& c, int n_spheres, unsigned seed, double jitter = 0.1, double 
   c.fh.fill_positions(f.x.data(), f.y.data(), f.z.data());
   for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.thx, &f.thy, &f.thz}) c.fh.fill(*v);
   c.fh.fill(f.kind);
-  const double sphere_cutoff = c.cutoff * c.kernel_scale;
-  c.sh.build(c.box, sphere_cutoff, s.x.data(), s.y.data(), s.z.data(), s.n_owned);
-  s.resize(s.n_owned + c.sh.n_ghost());
-  c.sh.fill_positions(s.x.data(), s.y.data(), s.z.data());
-  c.sh.fill(s.radius);
   c.fcells.build(f.x.data(), f.y.data(), f.z.data(), f.size(), c.cutoff, 2);
-  c.scells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), sphere_cutoff, 2);
-  c.pairs.build(f, s, c.scells, c.kernel_scale);
-  compute_fluid_voidage(f, s, c.pairs, 0.05);
+  rebuild_sphere_side(c);
   c.fh.fill(f.eps);
 }
 
@@ -306,15 +315,7 @@ struct TaitEnergy {
 double coupling_energy(Config& c, const TaitEnergy& eos, const HydrostaticPressure& ph) {
   FluidParticles& f = c.f;
   DemParticles& s = c.s;
-  s.resize(s.n_owned);
-  const double sphere_cutoff = c.cutoff * c.kernel_scale;
-  c.sh.build(c.box, sphere_cutoff, s.x.data(), s.y.data(), s.z.data(), s.n_owned);
-  s.resize(s.n_owned + c.sh.n_ghost());
-  c.sh.fill_positions(s.x.data(), s.y.data(), s.z.data());
-  c.sh.fill(s.radius);
-  c.scells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), sphere_cutoff, 2);
-  c.pairs.build(f, s, c.scells, c.kernel_scale);
-  compute_fluid_voidage(f, s, c.pairs, 0.05);
+  rebuild_sphere_side(c);
   double U = 0.0;
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     const double rho_i = f.rho[a] / f.eps[a];
