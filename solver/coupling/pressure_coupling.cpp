@@ -8,16 +8,17 @@
 
 namespace sphdem {
 
-void couple_pressure_variationally(FluidParticles& f, DemParticles& s, const FluidSpherePairs& pairs,
-                                   const std::vector<std::uint32_t>& halo_source, PairAccumulator& acc,
-                                   const HydrostaticPressure& ph) {
+double couple_pressure_variationally(FluidParticles& f, DemParticles& s, const FluidSpherePairs& pairs,
+                                     const std::vector<std::uint32_t>& halo_source, PairAccumulator& acc,
+                                     const HydrostaticPressure& ph) {
   const std::size_t ns = s.n_owned;
   const long nf = static_cast<long>(f.n_owned);
   acc.reset(ns, 3);
+  double walls_on_spheres_z = 0.0;
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) reduction(+ : walls_on_spheres_z)
     for (long a = 0; a < nf; ++a) {
       const double p_dyn = f.P[a] - ph(f.z[a]);
       const double inv_h = pairs.inv_kernel_h(f, a), vp = f.mass[a] / f.rho[a] * p_dyn;  // V_a P_a
@@ -36,7 +37,10 @@ void couple_pressure_variationally(FluidParticles& f, DemParticles& s, const Flu
         r[1] += vp * gf * dy;
         r[2] += vp * gf * dz;
       }
-      if (f.kind[a] != kFluid) continue;
+      if (f.kind[a] != kFluid) {  // a wall particle: what it pushes on the spheres, V_a P_a sum_j V_j dW/dz_a
+        walls_on_spheres_z += vp * gz;
+        continue;
+      }
       const double p_over_rho = p_dyn / f.rho[a];
       f.ax[a] -= p_over_rho * gx;
       f.ay[a] -= p_over_rho * gy;
@@ -49,6 +53,7 @@ void couple_pressure_variationally(FluidParticles& f, DemParticles& s, const Flu
     s.gy[j] = acc.sum(j, 1);
     s.gz[j] = acc.sum(j, 2) - ph.gradient_z();  // + the buoyancy -grad P_h
   }
+  return walls_on_spheres_z;
 }
 
 }  // namespace sphdem

@@ -11,6 +11,7 @@
 // porosity n filling the column is carried by the fluid (eq. 15).
 #include "dem/dem_particles.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/hydrostatic_pressure.hpp"
 
 namespace sphdem {
 
@@ -24,12 +25,31 @@ struct BasePorePressure {
 // NaN when the first layer holds no fluid particle.
 double excess_pore_pressure_base(const FluidParticles& f, const BasePorePressure& b);
 
-// The spheres' load on the bottom wall (z = 0) in the same unit: the elastic normal
-// force sum_i k max(0, r_i - z_i) over (area rho_f |g| H). It closes the column's
-// vertical momentum balance (solid + fluid, periodic sides): u_base + wall_load =
-// (1 - n)(rho_s/rho_f - 1) - (dM/dt) / (area rho_f |g| H), M the downward momentum of
-// the column, so a suspension in steady settling puts eq. 15 into u_base and a bed at
-// rest into wall_load. k is the normal stiffness of the linear contact law.
+// The spheres' contact load on the bottom wall (z = 0) in the same unit: the elastic
+// normal force sum_i k max(0, r_i - z_i) over (area rho_f |g| H), k the normal stiffness
+// of the linear contact law. A bed at rest puts eq. 15 here.
 double wall_load_base(const DemParticles& s, double k, double area, const BasePorePressure& b);
+
+// The fluid's excess load on the bottom wall in the same unit: the mean excess pore
+// pressure over the base as the wall feels it (a transducer's reading in the continuum,
+// integral of P - rho_f |g| H over the base / area), measured as the forces the wall
+// particles put on the column:
+//   F = sum over mobile a of m_a theta_z,a  (the SPH pairs with the walls: the pairs
+//                                            between mobile particles cancel in the sum)
+//     + walls_on_spheres_z                  (the variational pairs of the wall particles
+//                                            with the spheres, pressure_coupling.hpp)
+//     + |grad P_h| (sum_a m_a eps_a / rho_a + sum_j V_j)  (the hydrostatic split's
+//                                            analytic forces, zero without it),
+//   fluid_load = (F - |g| sum_a m_a - rho_f |g| sum_j V_j) / (area rho_f |g| H):
+// the fluid's weight and the weight of the water the spheres displace are the clear
+// column's load, so water at rest reads 0. With wall_load_base it closes the column's
+// vertical momentum balance (solid + fluid, periodic sides; every force from below is in
+// one of the two): fluid_load + wall_load = (1 - n)(rho_s/rho_f - 1) + (dP/dt) / (area
+// rho_f |g| H), P the column's upward momentum, so a suspension in steady settling puts
+// eq. 15 here. The first-layer mean above reads the pressure through the kernel sums'
+// error: in the reduced sand column at rest 0.37 while the wall carries 0.91 x eq. 15 in
+// contacts and this load is 0.014.
+double fluid_load_base(const FluidParticles& f, const DemParticles& s, double walls_on_spheres_z,
+                       const HydrostaticPressure& ph, double area, const BasePorePressure& b);
 
 }  // namespace sphdem

@@ -365,7 +365,8 @@ void Simulation::apply_variational_pressure(bool hold_spheres) {
   g_old_x_.assign(s.gx.begin(), s.gx.begin() + n);
   g_old_y_.assign(s.gy.begin(), s.gy.begin() + n);
   g_old_z_.assign(s.gz.begin(), s.gz.begin() + n);
-  couple_pressure_variationally(fluid_, s, sphere_pairs_, dem_halo_.source(), sphere_scratch_, hydrostatic_split());
+  walls_on_spheres_z_ =
+      couple_pressure_variationally(fluid_, s, sphere_pairs_, dem_halo_.source(), sphere_scratch_, hydrostatic_split());
   if (hold_spheres) return;
 #pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
   for (long j = 0; j < n; ++j) {
@@ -663,7 +664,9 @@ Diagnostics Simulation::diagnostics() const {
   const BasePorePressure base{eos_.rho0, std::abs(scene_.gravity[2]), scene_.fill_height(), scene_.fluid.spacing};
   d.excess_pore_pressure_base = excess_pore_pressure_base(f, base);
   const double k = std::visit([](const auto& law) { return law.normal.k; }, contact_law_);
-  d.wall_load_base = wall_load_base(s, k, scene_.box.length(0) * scene_.box.length(1), base);
+  const double area = scene_.box.length(0) * scene_.box.length(1);
+  d.wall_load_base = wall_load_base(s, k, area, base);
+  d.fluid_load_base = fluid_load_base(f, s, walls_on_spheres_z_, hydrostatic_split(), area, base);
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     if (f.kind[a] != kFluid) continue;
     d.fluid_mass += f.mass[a];

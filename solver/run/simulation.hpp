@@ -38,6 +38,7 @@ struct Diagnostics {
   std::size_t voidage_clamped = 0, omega_bounded = 0;
   double excess_pore_pressure_base = 0;  // run/pore_pressure.hpp: u_base / (rho_f |g| H)
   double wall_load_base = 0;             // run/pore_pressure.hpp: the spheres' load on the wall, same unit
+  double fluid_load_base = 0;            // run/pore_pressure.hpp: the fluid's excess load on the wall, same unit
   std::vector<double> vz_mean, slip_z_mean, com_z;  // per species
   std::vector<std::size_t> count;                    // spheres per species
 };
@@ -69,6 +70,9 @@ class Simulation {
   double contact_time() const { return t_contact_; }
   const Scene& scene() const { return scene_; }
   const TaitEquationOfState& eos() const { return eos_; }
+  // The hydrostatic pressure the variational coupling splits off (coupling.hydrostatic_split;
+  // zero without it).
+  HydrostaticPressure hydrostatic_split() const;
   FluidParticles& fluid() { return fluid_; }
   const FluidParticles& fluid() const { return fluid_; }
   DemParticles& spheres() { return dem_; }
@@ -109,7 +113,6 @@ class Simulation {
   void dem_half(double dt, bool first_half);
   void dem_forces(bool accumulate_mean, double weight, double dt_springs = 0.0);
   void apply_variational_pressure(bool hold_spheres);
-  HydrostaticPressure hydrostatic_split() const;
   template <class Force>
   void sum_over_rigid_groups(Force force);
   void check_finite() const;
@@ -150,6 +153,7 @@ class Simulation {
   int sort_interval_ = 20;
   long steps_ = 0;
   std::size_t voidage_clamped_ = 0, omega_bounded_ = 0;
+  double walls_on_spheres_z_ = 0.0;  // the wall particles' variational pairs on the spheres, last evaluation (N)
   PassTimers timers_;
 };
 
