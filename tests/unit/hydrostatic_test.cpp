@@ -116,8 +116,8 @@ TEST(ExcessPorePressure, WaterAtRestHasNone) {
 // carries its own weight and, by action-reaction, the buoyancy it gives the sphere,
 // rho_f g V: both are the clear column's load, so the excess is 0. With the variational
 // coupling part of the buoyancy comes from the wall particles' pairs straight onto the
-// spheres (near the wall the pairs carry the absolute pressure: 4 times the buoyancy up
-// from the wall, 3 times down from the fluid above); the load must count that path.
+// spheres (near the wall the pairs carry the absolute pressure: 3.1 times the buoyancy up
+// from the wall, 2.1 times down from the fluid above); the load must count that path.
 TEST(FluidLoadOnTheWall, NeutralLayerNearTheWallAddsNoExcess) {
   const std::vector<std::vector<std::string>> couplings = {
       {"coupling.pressure_coupling=interpolated"},
