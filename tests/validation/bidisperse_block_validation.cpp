@@ -20,8 +20,59 @@ namespace {
 
 struct BlockRun {
   double eps, reference, slip;
-  double smeared;  // the block's force balance with each sphere's own kernel voidage (see below)
+  double smeared;    // the block's force balance with each sphere's own kernel voidage at release (see below)
+  double balanced;   // the same with each sphere's voidage and pressure force, means over the slip's window
+  double buoyancy;   // sum_i V_i (-grad P)_z,i / (sum_i V_i rho_av g), mean over the window (1: the mixture's)
+  double closed;     // the same balance with each sphere's own window-mean slip shape (see below)
+  double slip_spread;  // standard deviation / mean of the spheres' window-mean superficial slips
 };
+
+// Per-sphere means over the slip's window (by sphere id: the spheres are re-sorted).
+struct SphereMeans {
+  std::vector<double> eps, pressure_z, d_sauter, slip_z;  // pressure_z: (-grad P + div tau)_z (N/m^3)
+  double duration = 0;
+  void add(const DemParticles& s, double dt) {
+    for (std::size_t i = 0; i < s.n_owned; ++i) {
+      const std::size_t k = static_cast<std::size_t>(s.id[i]);
+      if (k >= eps.size()) eps.resize(k + 1), pressure_z.resize(k + 1), d_sauter.resize(k + 1), slip_z.resize(k + 1);
+      eps[k] += s.eps[i] * dt;
+      pressure_z[k] += s.gz[i] * dt;
+      d_sauter[k] += s.d_sauter[i] * dt;
+      slip_z[k] += s.eps[i] * (s.ufz[i] - s.vz[i]) * dt;  // superficial slip (2.74), upward for a falling block
+    }
+    duration += dt;
+  }
+};
+
+// The block's force balance with each sphere's own voidage eps_i and pressure force
+// V_i p_i (window means): sum_i c(eps_i, u_i) u_i = sum_i V_i (rho_p,i g - p_i), with the
+// superficial slips u_i = eps_i w for one interstitial slip w, or (same_interstitial_slip
+// false) u_i = lambda s_i with s_i each sphere's window-mean slip; returns mean_i(u_i).
+double balanced_block_slip(const Simulation& sim, const Scene& sc, const SphereMeans& m,
+                           bool same_interstitial_slip = true) {
+  const DemParticles& s = sim.spheres();
+  const drag::Fluid fl{sc.fluid.density, sc.fluid.viscosity};
+  const double g = std::abs(sc.gravity[2]), inv_t = 1.0 / m.duration;
+  auto shape = [&](std::size_t k) { return same_interstitial_slip ? m.eps[k] * inv_t : m.slip_z[k] * inv_t; };
+  double weight = 0, shape_mean = 0;
+  for (std::size_t i = 0; i < s.n_owned; ++i) {
+    const std::size_t k = static_cast<std::size_t>(s.id[i]);
+    weight += s.volume(i) * (sc.species[s.species[i]].density * g - m.pressure_z[k] * inv_t);
+    shape_mean += shape(k) / s.n_owned;
+  }
+  auto residual = [&](double w) {
+    double drag_sum = 0;
+    for (std::size_t i = 0; i < s.n_owned; ++i) {
+      const std::size_t k = static_cast<std::size_t>(s.id[i]);
+      const double eps_i = m.eps[k] * inv_t, us = shape(k) * w;
+      drag_sum += std::visit([&](const auto& law) {
+        return drag::drag_coefficient(law, eps_i, us, 2.0 * s.radius[i], m.d_sauter[k] * inv_t, fl);
+      }, sc.drag) * us;
+    }
+    return drag_sum - weight;
+  };
+  return shape_mean * theory::bisect(residual, 1e-9, 1.0e3);
+}
 
 // The kernel smooths the block's top and bottom faces over its support 2h: the outer
 // sphere layers see eps_i above the lattice voidage (0.9 -> up to 0.935 at h/d = 2, the
@@ -76,21 +127,45 @@ BlockRun run_block(const std::string& file, const std::vector<std::string>& over
   r.smeared = smeared_block_slip(sim, sc, r.eps);
   const double period = 4.0 * sc.fill_height() / sc.fluid.sound_speed;
   const double t0 = sc.time.end - period;
-  double sum = 0, wsum = 0;
+  double sum = 0, wsum = 0, pressure = 0, volume = 0;
+  SphereMeans means;
+  for (std::size_t i = 0; i < s.n_owned; ++i) volume += s.volume(i);
   while (sim.time() < sc.time.end) {
     sim.step();
     if (sim.time() > t0) {
       const auto d = sim.diagnostics();
       sum += (w_big * d.slip_z_mean[0] + (1.0 - w_big) * d.slip_z_mean[1]) * sim.dt_sph();
       wsum += sim.dt_sph();
+      means.add(s, sim.dt_sph());
+      for (std::size_t i = 0; i < s.n_owned; ++i) pressure += s.volume(i) * s.gz[i] * sim.dt_sph();
     }
   }
   r.slip = sum / wsum;
+  r.balanced = balanced_block_slip(sim, sc, means);
+  r.closed = balanced_block_slip(sim, sc, means, false);
+  {
+    double m1 = 0, m2 = 0;
+    const double inv_t = 1.0 / means.duration;
+    for (std::size_t i = 0; i < s.n_owned; ++i) {
+      const double u = means.slip_z[static_cast<std::size_t>(s.id[i])] * inv_t;
+      m1 += u / s.n_owned;
+      m2 += u * u / s.n_owned;
+    }
+    r.slip_spread = std::sqrt(std::max(0.0, m2 - m1 * m1)) / m1;
+  }
+  const double rho_av = r.eps * sc.fluid.density + (1.0 - r.eps) * big.density;  // both species share rho_p
+  r.buoyancy = pressure / wsum / (volume * rho_av * std::abs(sc.gravity[2]));
   std::printf("%s %s: eps = %.4f, (4.5) %.5g m/s, simulated %.5g m/s: error %+.2f %%; with the kernel-smeared "
               "faces %.5g m/s (%+.2f %% from 4.5), simulated %+.2f %% from it\n", file.c_str(),
               overrides.empty() ? "classic, h/d_big = 2" : "double smoothing, h/d_small = 2", r.eps, r.reference,
               r.slip, 100 * (r.slip / r.reference - 1), r.smeared, 100 * (r.smeared / r.reference - 1),
               100 * (r.slip / r.smeared - 1));
+  std::printf("  over the window: pressure force on the spheres %.4f of rho_av g V; the force balance with each "
+              "sphere's window-mean voidage and pressure force %.5g m/s (%+.2f %% from 4.5), simulated %+.2f %% "
+              "from it\n", r.buoyancy, r.balanced, 100 * (r.balanced / r.reference - 1), 100 * (r.slip / r.balanced - 1));
+  std::printf("  with each sphere's own window-mean slip (spread %.2f %% of the mean): %.5g m/s (%+.2f %% from 4.5), "
+              "simulated %+.2f %% from it\n", 100 * r.slip_spread, r.closed, 100 * (r.closed / r.reference - 1),
+              100 * (r.slip / r.closed - 1));
   return r;
 }
 
@@ -112,13 +187,28 @@ TEST(BidisperseBlock, ReferenceReducesToMonodisperse) {
 
 // The 150/100 block misses the 4 % of issue #4: +7.3 % over the last period (the report's
 // row; the 200/100 block +7.5 %), more than the monodisperse 100 um block with the same
-// Beetstra drag at h/d = 2 (+6.1 %; with Di Felice +3.4 %). Most of the excess is the
-// kernel-smeared faces: smeared_block_slip, the force balance with each sphere's voidage
-// at release, predicts +5.8 %. The rest (~1.5 %) is not explained here; part is the edge
-// spheres' smaller buoyancy (-0.7 % of rho_av g in the monodisperse block, +0.6 % in slip).
-// The test: the smeared faces account for at least 70 % of the excess over (4.5).
-TEST(BidisperseBlock, Block150And100DoubleSmoothingExcessIsMostlyTheSmearedFaces) {
+// Beetstra drag at h/d = 2 (+6.1 %; with Di Felice +3.4 %). All of it is the kernel at the
+// block's faces, which the face spheres see three ways; the block's force balance with
+// what each sphere sees accounts for it step by step (seed-free lattice, 1 thread):
+//                                     150/100 double  200/100 double  150/100 classic  200/100 classic
+//   simulated                             +7.26 %         +7.44 %         +9.26 %          +12.56 %
+//   voidage at release (smeared)          +5.77 %         +5.44 %         +7.62 %          +10.46 %
+//   + window means of voidage and
+//     pressure force (balanced)           +6.16 %         +5.19 %         +8.80 %          +12.29 %
+//     (pressure force / rho_av g V)       0.9971          1.0031          0.9868           0.9793
+//   + each sphere's own slip (closed)     +7.01 %         +7.58 %         +9.04 %          +12.55 %
+//     (spread of the slips)               7.25 %          9.70 %          4.54 %           3.50 %
+// The last step: the fluid velocity interpolated at a face sphere mixes the interstitial
+// flow with the clear fluid's outside the block, so the slips differ between spheres
+// and their count mean (the row's quantity) is not the one interstitial slip of the
+// balance. What is left, 0.24 / -0.13 / 0.20 / 0.01 %, is the window's ringing. An
+// unbounded block (the closed form's) has no faces; a taller one halves the error (the
+// monodisperse block, validation/README.md).
+// The tests: the voidage at release accounts for at least 70 % of the excess over (4.5),
+// and the balance with all three closes within 0.5 %.
+TEST(BidisperseBlock, Block150And100DoubleSmoothingExcessIsTheSmearedFaces) {
   const BlockRun r = run_block("block_bidisperse_150_100.yaml", kDouble);
   EXPECT_GT(r.slip, r.reference);
   EXPECT_LT(std::abs(r.slip - r.smeared), 0.3 * std::abs(r.slip - r.reference));
+  EXPECT_NEAR(r.slip / r.closed, 1.0, 0.005);
 }
