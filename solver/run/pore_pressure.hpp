@@ -8,7 +8,9 @@
 // height (`fluid.fill_height`; the mixture's height does not change as the grains
 // settle). The first layer is the mobile fluid particles with z < dx (the lattice puts
 // them at dx/2). Zero for water at rest; (1 - n)(rho_s/rho_f - 1) once a suspension of
-// porosity n filling the column is carried by the fluid (eq. 15).
+// porosity n filling the column is carried by the fluid (eq. 15), up to the kernel sums'
+// error times the absolute pressure, which this point reading carries: fluid_load_base
+// below is the measure the validation uses.
 #include "dem/dem_particles.hpp"
 #include "sph/fluid_particles.hpp"
 #include "sph/hydrostatic_pressure.hpp"
