@@ -112,9 +112,8 @@ TEST(ExcessPorePressure, WaterAtRestHasNone) {
 // The fluid's load on the wall (run/pore_pressure.hpp: fluid_load_base) with a rigid
 // layer of neutrally buoyant spheres (epsilon 0.9) near the wall, within reach of the
 // wall particles' kernel (it stays where it is, so no inertia enters the balance). At
-// rest the fluid
-// carries its own weight and, by action-reaction, the buoyancy it gives the sphere,
-// rho_f g V: both are the clear column's load, so the excess is 0. With the variational
+// rest the fluid carries its own weight and, by action-reaction, the buoyancy it gives
+// the spheres, rho_f g V: both are the clear column's load, so the excess is 0. With the variational
 // coupling part of the buoyancy comes from the wall particles' pairs straight onto the
 // spheres (near the wall the pairs carry the absolute pressure: 3.1 times the buoyancy up
 // from the wall, 2.1 times down from the fluid above); the load must count that path.
@@ -124,7 +123,7 @@ TEST(FluidLoadOnTheWall, NeutralLayerNearTheWallAddsNoExcess) {
       {"coupling.pressure_coupling=variational"},
       {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=true"}};
   for (auto sets : couplings) {
-    const std::string name = sets.size() == 1 ? sets[0].substr(27) : "variational, split";
+    const std::string name = sets.size() == 1 ? sets[0].substr(sets[0].find('=') + 1) : "variational, split";
     const bool absolute_pairs = sets.size() == 1 && sets[0].find("variational") != std::string::npos;
     sets.push_back("startup.relax_steps=200");
     const Scene sc = load_scene_text(std::string(kColumn) + R"(

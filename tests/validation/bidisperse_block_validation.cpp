@@ -44,34 +44,50 @@ struct SphereMeans {
   }
 };
 
-// The block's force balance with each sphere's own voidage eps_i and pressure force
-// V_i p_i (window means): sum_i c(eps_i, u_i) u_i = sum_i V_i (rho_p,i g - p_i), with the
-// superficial slips u_i = eps_i w for one interstitial slip w, or (same_interstitial_slip
-// false) u_i = lambda s_i with s_i each sphere's window-mean slip; returns mean_i(u_i).
-double balanced_block_slip(const Simulation& sim, const Scene& sc, const SphereMeans& m,
-                           bool same_interstitial_slip = true) {
+// What the block's force balance takes of sphere i: its voidage, the shape of its
+// superficial slip (u_i = shape_i w for one scalar w) and its Sauter mean diameter.
+struct BalanceSphere {
+  double eps, shape, d_sauter;
+};
+
+// The block's force balance sum_i c(eps_i, u_i) u_i = weight with u_i = shape_i w;
+// returns the mean superficial slip mean_i(shape_i) w.
+template <class Sphere>
+double block_balance_slip(const Simulation& sim, const Scene& sc, double weight, Sphere sphere) {
   const DemParticles& s = sim.spheres();
   const drag::Fluid fl{sc.fluid.density, sc.fluid.viscosity};
-  const double g = std::abs(sc.gravity[2]), inv_t = 1.0 / m.duration;
-  auto shape = [&](std::size_t k) { return same_interstitial_slip ? m.eps[k] * inv_t : m.slip_z[k] * inv_t; };
-  double weight = 0, shape_mean = 0;
-  for (std::size_t i = 0; i < s.n_owned; ++i) {
-    const std::size_t k = static_cast<std::size_t>(s.id[i]);
-    weight += s.volume(i) * (sc.species[s.species[i]].density * g - m.pressure_z[k] * inv_t);
-    shape_mean += shape(k) / s.n_owned;
-  }
+  double shape_mean = 0;
+  for (std::size_t i = 0; i < s.n_owned; ++i) shape_mean += sphere(i).shape / s.n_owned;
   auto residual = [&](double w) {
     double drag_sum = 0;
     for (std::size_t i = 0; i < s.n_owned; ++i) {
-      const std::size_t k = static_cast<std::size_t>(s.id[i]);
-      const double eps_i = m.eps[k] * inv_t, us = shape(k) * w;
+      const BalanceSphere b = sphere(i);
+      const double us = b.shape * w;
       drag_sum += std::visit([&](const auto& law) {
-        return drag::drag_coefficient(law, eps_i, us, 2.0 * s.radius[i], m.d_sauter[k] * inv_t, fl);
+        return drag::drag_coefficient(law, b.eps, us, 2.0 * s.radius[i], b.d_sauter, fl);
       }, sc.drag) * us;
     }
     return drag_sum - weight;
   };
   return shape_mean * theory::bisect(residual, 1e-9, 1.0e3);
+}
+
+// The balance with each sphere's own voidage eps_i and pressure force V_i p_i (window
+// means): the weight is sum_i V_i (rho_p,i g - p_i), the slips u_i = eps_i w for one
+// interstitial slip w, or (same_interstitial_slip false) u_i = lambda s_i with s_i each
+// sphere's window-mean slip.
+double balanced_block_slip(const Simulation& sim, const Scene& sc, const SphereMeans& m,
+                           bool same_interstitial_slip = true) {
+  const DemParticles& s = sim.spheres();
+  const double g = std::abs(sc.gravity[2]), inv_t = 1.0 / m.duration;
+  double weight = 0;
+  for (std::size_t i = 0; i < s.n_owned; ++i)
+    weight += s.volume(i) * (sc.species[s.species[i]].density * g - m.pressure_z[static_cast<std::size_t>(s.id[i])] * inv_t);
+  return block_balance_slip(sim, sc, weight, [&](std::size_t i) {
+    const std::size_t k = static_cast<std::size_t>(s.id[i]);
+    return BalanceSphere{m.eps[k] * inv_t, (same_interstitial_slip ? m.eps[k] : m.slip_z[k]) * inv_t,
+                         m.d_sauter[k] * inv_t};
+  });
 }
 
 // The kernel smooths the block's top and bottom faces over its support 2h: the outer
@@ -82,24 +98,12 @@ double balanced_block_slip(const Simulation& sim, const Scene& sc, const SphereM
 // interstitial slip w, predicts the mean superficial slip mean_i(eps_i) w.
 double smeared_block_slip(const Simulation& sim, const Scene& sc, double eps) {
   const DemParticles& s = sim.spheres();
-  const drag::Fluid fl{sc.fluid.density, sc.fluid.viscosity};
   const double g = std::abs(sc.gravity[2]);
-  double weight = 0, eps_mean = 0;
-  for (std::size_t i = 0; i < s.n_owned; ++i) {
+  double weight = 0;
+  for (std::size_t i = 0; i < s.n_owned; ++i)
     weight += eps * (sc.species[s.species[i]].density - sc.fluid.density) * s.volume(i) * g;
-    eps_mean += s.eps[i] / s.n_owned;
-  }
-  auto residual = [&](double w) {
-    double drag_sum = 0;
-    for (std::size_t i = 0; i < s.n_owned; ++i) {
-      const double us = s.eps[i] * w;
-      drag_sum += std::visit([&](const auto& law) {
-        return drag::drag_coefficient(law, s.eps[i], us, 2.0 * s.radius[i], s.d_sauter[i], fl);
-      }, sc.drag) * us;
-    }
-    return drag_sum - weight;
-  };
-  return eps_mean * theory::bisect(residual, 1e-9, 1.0);
+  return block_balance_slip(sim, sc, weight,
+                            [&](std::size_t i) { return BalanceSphere{s.eps[i], s.eps[i], s.d_sauter[i]}; });
 }
 
 // Mean superficial slip of the whole block (both sizes, by sphere count) over the last
@@ -127,9 +131,8 @@ BlockRun run_block(const std::string& file, const std::vector<std::string>& over
   r.smeared = smeared_block_slip(sim, sc, r.eps);
   const double period = 4.0 * sc.fill_height() / sc.fluid.sound_speed;
   const double t0 = sc.time.end - period;
-  double sum = 0, wsum = 0, pressure = 0, volume = 0;
+  double sum = 0, wsum = 0;
   SphereMeans means;
-  for (std::size_t i = 0; i < s.n_owned; ++i) volume += s.volume(i);
   while (sim.time() < sc.time.end) {
     sim.step();
     if (sim.time() > t0) {
@@ -137,24 +140,26 @@ BlockRun run_block(const std::string& file, const std::vector<std::string>& over
       sum += (w_big * d.slip_z_mean[0] + (1.0 - w_big) * d.slip_z_mean[1]) * sim.dt_sph();
       wsum += sim.dt_sph();
       means.add(s, sim.dt_sph());
-      for (std::size_t i = 0; i < s.n_owned; ++i) pressure += s.volume(i) * s.gz[i] * sim.dt_sph();
     }
   }
   r.slip = sum / wsum;
   r.balanced = balanced_block_slip(sim, sc, means);
   r.closed = balanced_block_slip(sim, sc, means, false);
   {
-    double m1 = 0, m2 = 0;
+    double m1 = 0, m2 = 0, pressure = 0, volume = 0;
     const double inv_t = 1.0 / means.duration;
     for (std::size_t i = 0; i < s.n_owned; ++i) {
-      const double u = means.slip_z[static_cast<std::size_t>(s.id[i])] * inv_t;
+      const std::size_t k = static_cast<std::size_t>(s.id[i]);
+      const double u = means.slip_z[k] * inv_t;
       m1 += u / s.n_owned;
       m2 += u * u / s.n_owned;
+      pressure += s.volume(i) * means.pressure_z[k] * inv_t;
+      volume += s.volume(i);
     }
     r.slip_spread = std::sqrt(std::max(0.0, m2 - m1 * m1)) / m1;
+    const double rho_av = r.eps * sc.fluid.density + (1.0 - r.eps) * big.density;  // both species share rho_p
+    r.buoyancy = pressure / (volume * rho_av * std::abs(sc.gravity[2]));
   }
-  const double rho_av = r.eps * sc.fluid.density + (1.0 - r.eps) * big.density;  // both species share rho_p
-  r.buoyancy = pressure / wsum / (volume * rho_av * std::abs(sc.gravity[2]));
   std::printf("%s %s: eps = %.4f, (4.5) %.5g m/s, simulated %.5g m/s: error %+.2f %%; with the kernel-smeared "
               "faces %.5g m/s (%+.2f %% from 4.5), simulated %+.2f %% from it\n", file.c_str(),
               overrides.empty() ? "classic, h/d_big = 2" : "double smoothing, h/d_small = 2", r.eps, r.reference,
