@@ -145,7 +145,30 @@ def di_felice_drag(us, d, rho_f, mu, eps):
     return 0.125 * dallavalle_cd(re) * eps ** (-di_felice_xi(re)) * math.pi * d * d * rho_f * abs(us) * us
 
 
-def masliyah_velocities(species, rho_f, mu, g=G):
+def brown_lawler_cd(re):
+    """Brown & Lawler (2003): C_d = 24/Re (1 + 0.150 Re^0.681) + 0.407/(1 + 8710/Re)."""
+    return 24.0 / re * (1.0 + 0.150 * re ** 0.681) + 0.407 / (1.0 + 8710.0 / re)
+
+
+def brown_lawler_drag(us, d, rho_f, mu, eps):
+    """The sand column's drag (Zhao et al. 2014): Brown-Lawler's C_d with Di Felice's
+    voidage function, f = 1/8 C_d eps^-xi pi d^2 rho_f |u_s| u_s; as di_felice_drag."""
+    if us == 0.0:
+        return 0.0
+    re = rho_f * abs(us) * d / mu
+    return 0.125 * brown_lawler_cd(re) * eps ** (-di_felice_xi(re)) * math.pi * d * d * rho_f * abs(us) * us
+
+
+def uniform_size_species(d_min, d_max, rho, phi_total, bins=200):
+    """A size law uniform by number on [d_min, d_max] as `bins` species of the bins' mid
+    diameters, each with its share of the solid volume fraction phi_total (the share goes
+    as d^3). Returns (species list for masliyah_velocities, number weights)."""
+    ds = [d_min + (k + 0.5) * (d_max - d_min) / bins for k in range(bins)]
+    vol = sum(d ** 3 for d in ds)
+    return [(d, rho, phi_total * d ** 3 / vol) for d in ds], [1.0 / bins] * bins
+
+
+def masliyah_velocities(species, rho_f, mu, g=G, drag=di_felice_drag):
     """Lab-frame settling speeds of a uniform multispecies suspension, no net volume flux
     (Masliyah 1979, Chem. Eng. Sci. 34:1166; Lockett & Al-Habbooby 1973; Patwardhan & Tien
     1985), with the Di Felice drag of the scenes in place of Masliyah's Richardson-Zaki f.
@@ -161,7 +184,8 @@ def masliyah_velocities(species, rho_f, mu, g=G):
     so species i falls (lab frame, downward positive) at
       w_i = -v_i = s_i - sum_j phi_j s_j.                                   (M4)
     One species: rho_susp = rho_av of (4.2-4.4) and w = eps s = u_s, i.e.
-    di_felice_block_slip. Returns (w list, u_s list, eps, rho_susp)."""
+    di_felice_block_slip. `drag` replaces the Di Felice law (brown_lawler_drag for the sand
+    column). Returns (w list, u_s list, eps, rho_susp)."""
     phi_tot = sum(p for _, _, p in species)
     eps = 1.0 - phi_tot
     rho_susp = eps * rho_f + sum(p * r for _, r, p in species)
@@ -171,7 +195,7 @@ def masliyah_velocities(species, rho_f, mu, g=G):
         if weight == 0.0:
             slips.append(0.0)
             continue
-        mag = bisect(lambda u: di_felice_drag(u, d, rho_f, mu, eps) - abs(weight), 1e-12, 10.0)
+        mag = bisect(lambda u: drag(u, d, rho_f, mu, eps) - abs(weight), 1e-12, 10.0)
         slips.append(math.copysign(mag, weight))
     s = [u / eps for u in slips]
     u_f = sum(p * si for (_, _, p), si in zip(species, s))
