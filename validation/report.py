@@ -712,7 +712,8 @@ class BlockBidisperse:
              "with the window's voidage and pressure force (0.997, 1.003, 0.987, 0.979 of ρ_av g V) +6.2, +5.2, "
              "+8.8, +12.3 %; with each sphere's own slip (the face spheres see the clear fluid's velocity "
              "through the kernel: spread 7.3, 9.7, 4.5, 3.5 %) +7.0, +7.6, +9.0, +12.6 %, against +7.3, +7.4, "
-             "+9.3, +12.6 % simulated. An unbounded block has no faces; a taller one halves the error")
+             "+9.3, +12.6 % simulated. An unbounded block has no faces; a taller one halves the error (rows at the end: "
+             "the double-smoothing blocks 4 mm tall, and both heights extrapolated to no faces)")
 
     def runs(self, mode):
         out = []
@@ -1090,9 +1091,11 @@ class SandColumn:
             "variational pairs with the spheres) less the clear column's weight, i.e. the base's mean excess "
             "pore pressure as the wall feels it (run/pore_pressure.hpp)")
     FIRST_LAYER = ("the first fluid layer's mean P − ρf g (H − z) (excess_pore_pressure_base) is a point reading "
-                   "through the kernel sums, whose error multiplies the absolute pressure: in the 0.1 m column "
-                   "at rest it reads ~0.37 while the wall carries the grains in contacts (row 'momentum "
-                   "balance'); with the hydrostatic split ~0.01")
+                   "through the kernel sums, not a load: without the hydrostatic split (session 6) it read ~0.37 in "
+                   "the 0.1 m column at rest, where the wall carries the grains in contacts (row 'momentum "
+                   "balance'); with the split (the cases now) 0.008 there, but in the 1 m column it climbs to "
+                   "~0.36 from 0.15 s on, once the bed forms around the first layer, while the fluid's load on "
+                   "the wall falls from its peak as the contacts take the landed grains (not investigated)")
     SHORT = ("the 0.1 m column is too short for eq. 15: its grains reach their steady speed (~0.1 s) after "
              "the lowest have landed, so at no time does the fluid carry them all")
 
