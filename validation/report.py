@@ -344,14 +344,11 @@ class BlockMonodisperse:
         eps = r.case["particles"][0]["voidage"]
         ref = theory.di_felice_block_slip(sp["diameter"], sp["density"], rho_f, mu, eps, r.g())
         t, slip = r.log["time"], r.log[f"slip_z_mean:{sp['name']}"]
-        period = r.acoustic_period()
-        t1 = t[-1]
         # whole periods after 3 ms of start-up: the block's slip reaches 63 % of its
         # terminal value at ~0.8 ms (measured, eps = 0.9), so 3 ms is > 3 relaxation times
-        n = int((t1 - self.STARTUP) // period)
+        t0, t1, n = whole_periods(r, self.STARTUP)
         if n < 1:
             return float("nan"), ref, eps, (t1, t1)
-        t0 = t1 - n * period
         return time_average(t, slip, t0, t1), ref, eps, (t0, t1)
 
     def evaluate(self, results, ctx):
@@ -411,17 +408,10 @@ class BlockMonodisperse:
             if not tall.ok or tall.log is None or not short.ok or short.log is None:
                 rows += failed_run_rows(self.name, tall, f"block_eps{eps}_tall")
                 continue
-            pts = []
-            for r in (short, tall):
-                slip, ref, _, _ = self.measure(r)
-                g0 = r.case["particles"][0]
-                pts.append((g0["max"][2] - g0["min"][2], slip / ref - 1, slip))
-            (h1, e1, _), (h2, e2, s2) = pts
-            b = (e1 - e2) / (1 / h1 - 1 / h2)
-            a = e1 - b / h1
+            h1, e1, h2, e2, a, b = face_extrapolation(short, tall, lambda r: self.measure(r)[:2])
+            s2, ref, _, (t0, t1) = self.measure(tall)
             window = ""
             if suffix:
-                _, _, _, (t0, t1) = self.measure(tall)
                 window = f", {t1 * 1e3:.0f} ms runs (window {t0 * 1e3:.1f}–{t1 * 1e3:.1f} ms)"
             rows.append(Row(self.name, f"ε = {eps:g}, block {h2 * 1e3:.3g} mm tall instead of {h1 * 1e3:.3g} mm: mean "
                                        f"slip{window}", f"{ref * 1e3:.4g} mm/s", "Di Felice block slip (4.4)",
@@ -676,6 +666,29 @@ class SuspensionMonodisperse:
 
 
 
+def whole_periods(r, startup):
+    """(t0, t1, n): the run's last n whole acoustic periods 4H/c0 after `startup` (the
+    column rings at that period, so the blocks' slips are averaged over whole ones)."""
+    period = r.acoustic_period()
+    t1 = r.log["time"][-1]
+    n = int((t1 - startup) // period)
+    return t1 - n * period, t1, n
+
+
+def face_extrapolation(short, tall, slip_and_reference):
+    """A block's error at two heights H_b fitted as a + b/H_b (the faces' share goes as
+    1/H_b); a is the error of a block without faces. slip_and_reference(run) gives the
+    run's (slip, reference). Returns (h1, e1, h2, e2, a, b)."""
+    pts = []
+    for r in (short, tall):
+        slip, ref = slip_and_reference(r)
+        g0 = r.case["particles"][0]
+        pts.append((g0["max"][2] - g0["min"][2], slip / ref - 1))
+    (h1, e1), (h2, e2) = pts
+    b = (e1 - e2) / (1 / h1 - 1 / h2)
+    return h1, e1, h2, e2, e1 - b / h1, b
+
+
 def two_species_mean(r, prefix, t0, t1):
     """Mean over [t0, t1] of the average of a per-species log column over the species
     (the sphere-count mean when the species are dealt half and half)."""
@@ -743,10 +756,7 @@ class BlockBidisperse:
         eps = r.case["particles"][0]["voidage"]
         ref = theory.bidisperse_block_slip(big["diameter"], small["diameter"], 0.5, big["density"], rho_f, mu,
                                            eps, r.g())
-        period = r.acoustic_period()
-        t1 = r.log["time"][-1]
-        n = int((t1 - BlockMonodisperse.STARTUP) // period)
-        t0 = t1 - n * period
+        t0, t1, _ = whole_periods(r, BlockMonodisperse.STARTUP)
         return two_species_mean(r, "slip_z_mean", t0, t1), -two_species_mean(r, "vz_mean", t0, t1), ref
 
     def evaluate(self, results, ctx):
@@ -793,14 +803,8 @@ class BlockBidisperse:
             if not (short.ok and tall.ok and short.log is not None and tall.log is not None):
                 rows += failed_run_rows(self.name, tall, f"block_{pair}_doubletall")
                 continue
-            pts = []
-            for r in (short, tall):
-                slip, _, ref = self.measure(r)
-                g0 = r.case["particles"][0]
-                pts.append((g0["max"][2] - g0["min"][2], slip / ref - 1, slip))
-            (h1, e1, _), (h2, e2, s2) = pts
-            b = (e1 - e2) / (1 / h1 - 1 / h2)
-            a = e1 - b / h1
+            h1, e1, h2, e2, a, b = face_extrapolation(short, tall, lambda r: self.measure(r)[::2])
+            s2, _, ref = self.measure(tall)
             label = pair.replace("_", "/") + " µm, double smoothing"
             rows.append(Row(self.name, f"{label}, block {h2 * 1e3:.3g} mm tall instead of {h1 * 1e3:.3g} mm: mean slip, "
                                        f"ε = {tall.case['particles'][0]['voidage']:g}", f"{ref * 1e3:.4g} mm/s",
