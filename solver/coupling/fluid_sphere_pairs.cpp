@@ -6,20 +6,34 @@
 
 namespace sphdem {
 
-void FluidSpherePairs::build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells,
-                             double kernel_scale) {
+void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale,
+                                  double rc) {
   scale = kernel_scale;
-  list.build(dem_cells, f.x.data(), f.y.data(), f.z.data(), f.n_owned, dem_cells.max_cutoff(), false);
+  list.build(dem_cells, f.x.data(), f.y.data(), f.z.data(), f.n_owned, rc, false);
+  sphere.resize(list.neighbour.size());
   w.resize(list.neighbour.size());
+  grad.resize(list.neighbour.size());
+  count.assign(f.n_owned, 0);
+}
+
+void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s) {
   const long n = static_cast<long>(f.n_owned);
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {
     const double inv_h = inv_kernel_h(f, a);
+    const double xa = f.x[a], ya = f.y[a], za = f.z[a];
+    std::uint32_t kept = list.begin(a);
     for (std::uint32_t k = list.begin(a); k < list.end(a); ++k) {
       const std::uint32_t j = list.neighbour[k];
-      const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];
-      w[k] = kernel::w_q(std::sqrt(dx * dx + dy * dy + dz * dz) * inv_h, inv_h);
+      const double dx = xa - s.x[j], dy = ya - s.y[j], dz = za - s.z[j];
+      const double q = std::sqrt(dx * dx + dy * dy + dz * dz) * inv_h;
+      if (q >= kernel::kSupport) continue;
+      sphere[kept] = j;
+      w[kept] = kernel::w_q(q, inv_h);
+      grad[kept] = kernel::grad_factor_q(q, inv_h);
+      ++kept;
     }
+    count[a] = kept - list.begin(a);
   }
 }
 

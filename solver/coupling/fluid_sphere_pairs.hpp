@@ -1,9 +1,12 @@
 #pragma once
-// The fluid-sphere pairs of one step: for each owned SPH particle a, the spheres j
-// (owned or halo) within its kernel support, with W(r_aj, h_a). Built once per step and
-// shared by the voidage (2.50), the interpolation at the spheres (2.69, 2.72: the same
-// W, since W_ja(h_a) is the fluid particle's kernel) and the reaction (2.71), so each
-// pair costs one cell walk and one kernel evaluation instead of three.
+// The fluid-sphere pairs: for each owned SPH particle a, the spheres j (owned or halo)
+// within its kernel support, with W(r_aj, H_a) and its gradient factor. A Verlet list
+// (cut-off = support + skin) is built only when the particles have moved too far
+// (run/neighbour_update); every step evaluate() keeps, row by row, the entries within the
+// support with their kernel values. Those are shared by the voidage (2.50), the
+// interpolation at the spheres (2.69, 2.72: the same W, since W_ja(h_a) is the fluid
+// particle's kernel), the reaction (2.71) and the variational pressure coupling, so each
+// pair costs one distance and one kernel evaluation per step instead of four.
 #include <cstdint>
 #include <vector>
 
@@ -15,9 +18,16 @@
 namespace sphdem {
 
 struct FluidSpherePairs {
-  NeighbourList list;    // rows: owned SPH particles; entries: sphere indices
-  std::vector<double> w;  // W(r_aj, H_a) per entry (0 beyond 2 H_a)
-  double scale = 1.0;     // H_a / h_a of the mobile fluid (scene key coupling.sphere_kernel_scale)
+  NeighbourList list;                  // Verlet list: rows owned SPH particles, entries sphere indices
+  std::vector<std::uint32_t> count;    // per row: entries within the support (stored first)
+  std::vector<std::uint32_t> sphere;   // per entry: the sphere's index, row by row as list
+  std::vector<double> w;               // W(r_aj, H_a) per entry within the support
+  std::vector<double> grad;            // grad_a W_aj = grad * (x_a - x_j)
+  double scale = 1.0;  // H_a / h_a of the mobile fluid (scene key coupling.sphere_kernel_scale)
+
+  // Entries [begin(a), end(a)) of row a are the spheres within 2 H_a.
+  std::uint32_t begin(std::size_t a) const { return list.offset[a]; }
+  std::uint32_t end(std::size_t a) const { return list.offset[a] + count[a]; }
 
   // 1 / H_a: scale h_a for the mobile fluid, h_a for wall particles. A wall particle
   // does not move: its superficial density follows only the fluid within its own 2 h_a,
@@ -28,8 +38,16 @@ struct FluidSpherePairs {
     return f.kind[a] == kWall ? f.inv_h[a] : f.inv_h[a] / scale;
   }
 
-  // dem_cells bins the spheres (owned + halo) with a cut-off >= 2 scale max h.
-  void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells, double kernel_scale = 1.0);
+  // The Verlet list: spheres binned in dem_cells (owned + halo) within rc of each owned
+  // SPH particle; rc >= 2 scale max h, up to dem_cells.max_cutoff().
+  void build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale, double rc);
+  // Kernel values at the current positions (every step).
+  void evaluate(const FluidParticles& f, const DemParticles& s);
+  // Both, at the cells' cut-off (tests).
+  void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells, double kernel_scale = 1.0) {
+    build_list(f, dem_cells, kernel_scale, dem_cells.max_cutoff());
+    evaluate(f, s);
+  }
 };
 
 }  // namespace sphdem

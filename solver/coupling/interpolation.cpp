@@ -17,10 +17,9 @@ void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, cons
     for (long b = 0; b < nf; ++b) {
       if (f.kind[b] != kFluid) continue;
       const double mb = f.mass[b], vb = mb / f.rho[b];
-      for (std::uint32_t k = pairs.list.begin(b); k < pairs.list.end(b); ++k) {
+      for (std::uint32_t k = pairs.begin(b); k < pairs.end(b); ++k) {
         const double w = pairs.w[k];
-        if (w == 0.0) continue;
-        const std::uint32_t j = pairs.list.neighbour[k];
+        const std::uint32_t j = pairs.sphere[k];
         const std::uint32_t owner = j < ns ? j : halo_source[j - ns];
         double* r = acc.row(t, owner);
         const double vw = vb * w, mw = mb * w;

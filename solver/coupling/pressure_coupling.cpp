@@ -2,9 +2,6 @@
 
 #include <omp.h>
 
-#include <cmath>
-
-#include "sph/kernel.hpp"
 
 namespace sphdem {
 
@@ -21,14 +18,12 @@ double couple_pressure_variationally(FluidParticles& f, DemParticles& s, const F
 #pragma omp for schedule(static) reduction(+ : walls_on_spheres_z)
     for (long a = 0; a < nf; ++a) {
       const double p_dyn = f.P[a] - ph(f.z[a]);
-      const double inv_h = pairs.inv_kernel_h(f, a), vp = f.mass[a] / f.rho[a] * p_dyn;  // V_a P_a
+      const double vp = f.mass[a] / f.rho[a] * p_dyn;  // V_a P_a
       double gx = 0.0, gy = 0.0, gz = 0.0;  // sum_j V_j grad_a W_aj = -grad eps_a
-      for (std::uint32_t k = pairs.list.begin(a); k < pairs.list.end(a); ++k) {
-        const std::uint32_t j = pairs.list.neighbour[k];
+      for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {
+        const std::uint32_t j = pairs.sphere[k];
         const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];
-        const double q = std::sqrt(dx * dx + dy * dy + dz * dz) * inv_h;
-        if (q >= kernel::kSupport) continue;
-        const double gf = kernel::grad_factor_q(q, inv_h), c = s.volume(j) * gf;
+        const double gf = pairs.grad[k], c = s.volume(j) * gf;
         gx += c * dx;
         gy += c * dy;
         gz += c * dz;

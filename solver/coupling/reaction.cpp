@@ -8,9 +8,9 @@ void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const Fluid
   for (long a = 0; a < n; ++a) {
     if (f.kind[a] != kFluid) continue;
     double rx = 0, ry = 0, rz = 0;
-    for (std::uint32_t k = pairs.list.begin(a); k < pairs.list.end(a); ++k) {
-      const std::uint32_t j = pairs.list.neighbour[k];
-      if (s.shepard[j] <= 0.0 || pairs.w[k] == 0.0) continue;
+    for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {
+      const std::uint32_t j = pairs.sphere[k];
+      if (s.shepard[j] <= 0.0) continue;
       const double w = pairs.w[k] / s.shepard[j];
       rx += s.fmx[j] * w;
       ry += s.fmy[j] * w;

@@ -9,8 +9,8 @@ std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, cons
 #pragma omp parallel for schedule(static) reduction(+ : clamped)
   for (long a = 0; a < n; ++a) {
     double solid = 0.0, solid_over_d = 0.0;
-    for (std::uint32_t k = pairs.list.begin(a); k < pairs.list.end(a); ++k) {
-      const std::uint32_t j = pairs.list.neighbour[k];
+    for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {
+      const std::uint32_t j = pairs.sphere[k];
       if (big && big->is_big[s.species[j]]) continue;  // smoothed apart (3.8)
       const double vw = s.volume(j) * pairs.w[k];
       solid += vw;

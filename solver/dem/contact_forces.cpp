@@ -1,5 +1,7 @@
 #include "dem/contact_forces.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -11,18 +13,38 @@ void ContactNeighbourList::build(const DemParticles& s, const CellList& cells, d
   skin = skin_;
   const std::size_t n = s.n_owned;
   offset.assign(n + 1, 0);
-  neighbour.clear();
   double rmax = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) rmax = std::max(rmax, s.radius[i]);
   const double rc_max = 2.0 * rmax + skin;
-  for (std::size_t i = 0; i < n; ++i) {
-    cells.for_each_neighbour(s.x[i], s.y[i], s.z[i], rc_max * rc_max,
-                             [&](std::uint32_t j, double, double, double, double r2) {
-                               if (j == i) return;
-                               const double rc = s.radius[i] + s.radius[j] + skin;
-                               if (r2 < rc * rc) neighbour.push_back(j);
-                             });
-    offset[i + 1] = static_cast<std::uint32_t>(neighbour.size());
+  // Each thread fills a contiguous block of rows, then the blocks are concatenated:
+  // the same list as one thread would build.
+  const int nt = n > 256 ? omp_get_max_threads() : 1;
+  if (static_cast<int>(local_.size()) < nt) local_.resize(nt);
+  std::vector<std::size_t> lo(nt + 1, 0);
+#pragma omp parallel num_threads(nt)
+  {
+    const int t = omp_get_thread_num(), T = omp_get_num_threads();
+    const std::size_t b = n * t / T, e = n * (t + 1) / T;
+    auto& buf = local_[t];
+    buf.clear();
+    for (std::size_t i = b; i < e; ++i) {
+      cells.for_each_neighbour(s.x[i], s.y[i], s.z[i], rc_max * rc_max,
+                               [&](std::uint32_t j, double, double, double, double r2) {
+                                 if (j == i) return;
+                                 const double rc = s.radius[i] + s.radius[j] + skin;
+                                 if (r2 < rc * rc) buf.push_back(j);
+                               });
+      offset[i + 1] = static_cast<std::uint32_t>(buf.size());  // local for now
+    }
+    lo[t + 1] = buf.size();
+#pragma omp barrier
+#pragma omp single
+    {
+      for (int k = 0; k < T; ++k) lo[k + 1] += lo[k];
+      neighbour.resize(lo[T]);
+    }
+    for (std::size_t i = b; i < e; ++i) offset[i + 1] += static_cast<std::uint32_t>(lo[t]);
+    std::copy(buf.begin(), buf.end(), neighbour.begin() + lo[t]);
   }
 }
 

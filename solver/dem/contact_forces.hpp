@@ -19,6 +19,9 @@ struct ContactNeighbourList {
   std::vector<std::uint32_t> offset, neighbour;
   double skin = 0.0;
   void build(const DemParticles& s, const CellList& cells, double skin);
+
+ private:
+  std::vector<std::vector<std::uint32_t>> local_;  // per-thread rows, kept between builds
 };
 
 // Contact force (cx,cy,cz) on every owned sphere from the linear spring-dashpot

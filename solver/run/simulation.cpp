@@ -40,14 +40,13 @@ struct Lap {
 };
 enum Pass { kIntegrate, kDem, kNeighbours, kVoidage, kDensity, kMomentum, kInterp, kReaction, kOther };
 
-// Margin on the largest kernel support when binning, so that h may grow a little
-// between rebuilds.
-constexpr double kCutoffMargin = 1.05;
+// Verlet skin of the fluid's lists (fluid-fluid and fluid-sphere), in units of the
+// largest h at the build: the lists hold the pairs within support + skin and are rebuilt
+// once the particles' displacements and the growth of h have used the skin up.
+constexpr double kFluidSkin = 0.2;
 // Below this many spheres the DEM sub-step loops run on one thread: a parallel region
 // costs more than the work (a single settling sphere takes ~10^5 sub-steps).
 constexpr long kMinParallelSpheres = 256;
-// Steps between re-sorting the owned particles into cell order.
-constexpr int kSortInterval = 20;
 
 }  // namespace
 
@@ -165,6 +164,16 @@ void Simulation::build_initial_state() {
   next_dt();
 }
 
+// A halo of at least `needed`, and up to `wanted` where the periodic box allows.
+double Simulation::halo_width(double needed, double wanted) const {
+  double width = std::max(needed, wanted);
+  for (int d = 0; d < 3; ++d)
+    if (scene_.box.periodic[d]) width = std::min(width, std::max(needed, scene_.box.length(d)));
+  return width;
+}
+
+// Every list anew: the fluid's halo, cells and half pair list at 2 h_max + skin, then the
+// spheres' (rebuild_contact_neighbours) and the fluid-sphere pairs.
 void Simulation::rebuild_neighbours() {
   FluidParticles& f = fluid_;
   const Box& box = scene_.box;
@@ -173,9 +182,12 @@ void Simulation::rebuild_neighbours() {
     f.x[a] = box.wrap(0, f.x[a]);
     f.y[a] = box.wrap(1, f.y[a]);
   }
-  cell_size_ = kCutoffMargin * fluid_cutoff();
+  const double support = fluid_cutoff();
+  hmax_at_build_ = f.n_owned > 0 ? support / kernel::kSupport : 0.0;
+  fluid_skin_ = kFluidSkin * hmax_at_build_;
+  cell_size_ = support + fluid_skin_;
   f.resize(f.n_owned);
-  fluid_halo_.build(box, cell_size_, f.x.data(), f.y.data(), f.z.data(), f.n_owned);
+  fluid_halo_.build(box, halo_width(support, cell_size_), f.x.data(), f.y.data(), f.z.data(), f.n_owned);
   f.resize(f.n_owned + fluid_halo_.n_ghost());
   fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
   for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.eps}) fluid_halo_.fill(*v);
@@ -183,7 +195,68 @@ void Simulation::rebuild_neighbours() {
   fluid_halo_.fill(f.id);
   fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
   fluid_pairs_.build(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned, cell_size_, true, /*half=*/true);
+  xr_.assign(f.x.begin(), f.x.begin() + f.n_owned);
+  yr_.assign(f.y.begin(), f.y.begin() + f.n_owned);
+  zr_.assign(f.z.begin(), f.z.begin() + f.n_owned);
+  fluid_lists_stale_ = false;
+  ++neighbour_builds_;
   rebuild_contact_neighbours();
+  build_sphere_pairs();
+}
+
+// Verlet criteria (the lists were built at 2 h_max + skin, the fluid-sphere pairs at
+// 2 H_max + skin with H = scale h):
+//  - fluid pairs: 2 max|x - x_build| + 2 (h_max - h_max,build) <= skin;
+//  - fluid-sphere pairs: max|x - x_build| + max|x_j - x_j,halo| + 2 scale (h_max - h_max,build)
+//    <= skin, with the spheres' displacement since their halo was built;
+// otherwise the lists are rebuilt. Between rebuilds the halo copies are refreshed.
+void Simulation::update_neighbours() {
+  FluidParticles& f = fluid_;
+  const DemParticles& s = dem_;
+  const long nf = static_cast<long>(f.n_owned), ns = static_cast<long>(s.n_owned);
+  if (fluid_lists_stale_ || static_cast<long>(xr_.size()) != nf) {
+    rebuild_neighbours();
+    return;
+  }
+  double hmax = 0.0, df2 = 0.0, ds2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : hmax, df2)
+  for (long a = 0; a < nf; ++a) {
+    hmax = std::max(hmax, f.h[a]);
+    const double dx = f.x[a] - xr_[a], dy = f.y[a] - yr_[a], dz = f.z[a] - zr_[a];
+    df2 = std::max(df2, dx * dx + dy * dy + dz * dz);
+  }
+#pragma omp parallel for schedule(static) reduction(max : ds2) if (ns > kMinParallelSpheres)
+  for (long j = 0; j < ns; ++j) {
+    const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
+    ds2 = std::max(ds2, dx * dx + dy * dy + dz * dz);
+  }
+  const double growth = kernel::kSupport * std::max(0.0, hmax - hmax_at_build_);
+  const double df = std::sqrt(df2), ds = std::sqrt(ds2);
+  if (2.0 * df + growth > fluid_skin_) {
+    rebuild_neighbours();
+    return;
+  }
+  fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
+  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.h, &f.inv_h, &f.rho}) fluid_halo_.fill(*v);
+  if (scene_.double_smoothing.enabled)  // its re-smoothing walks the fluid's cells (3.10)
+    fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
+  if (nf > 0 && !sphere_pairs_stale_ && df + ds + scene_.sphere_kernel_scale * growth > fluid_skin_)
+    rebuild_contact_neighbours();  // a new sphere halo, so that it covers the new pairs
+  if (sphere_pairs_stale_) build_sphere_pairs();
+}
+
+// The fluid-sphere Verlet list, from the spheres (owned + halo) binned now.
+void Simulation::build_sphere_pairs() {
+  const DemParticles& s = dem_;
+  sphere_pairs_stale_ = false;
+  if (fluid_.n_owned == 0) return;  // dry DEM
+  const double cut = fluid_sphere_cutoff();
+  dem_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cut, 2);
+  sphere_pairs_.build_list(fluid_, dem_cells_, scene_.sphere_kernel_scale, cut);
+}
+
+double Simulation::fluid_sphere_cutoff() const {
+  return scene_.sphere_kernel_scale * kernel::kSupport * hmax_at_build_ + fluid_skin_;
 }
 
 // Sphere halo (wide enough for the fluid kernel and for contacts), the sphere cells
@@ -208,21 +281,22 @@ void Simulation::rebuild_contact_neighbours() {
   s.resize(s.n_owned);
   // (the big spheres' own kernel of the double smoothing reaches further, plus the skin
   // they may move before the next rebuild)
-  const double sphere_cell = scene_.sphere_kernel_scale * cell_size_;
-  const double halo = std::max({sphere_cell, contact_cut, big_cutoff_ > 0 ? big_cutoff_ + skin : 0.0});
-  dem_halo_.build(box, halo, s.x.data(), s.y.data(), s.z.data(), s.n_owned);
+  const double needed = std::max({scene_.sphere_kernel_scale * kernel::kSupport * hmax_at_build_, 2.0 * rmax,
+                                  big_cutoff_});
+  const double wanted = std::max({fluid_sphere_cutoff(), contact_cut, big_cutoff_ > 0 ? big_cutoff_ + skin : 0.0});
+  dem_halo_.build(box, halo_width(needed, wanted), s.x.data(), s.y.data(), s.z.data(), s.n_owned);
   s.resize(s.n_owned + dem_halo_.n_ghost());
   dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
   for (auto* v : {&s.vx, &s.vy, &s.vz, &s.radius, &s.mass}) dem_halo_.fill(*v);
   dem_halo_.fill(s.id);
   if (rotation_)
     for (auto* v : {&s.wx, &s.wy, &s.wz}) dem_halo_.fill(*v);
-  dem_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), sphere_cell, 2);
   if (s.n_owned > 0) {
     contact_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
     contacts_.build(s, contact_cells_, skin);
   }
   if (rotation_) contact_history_.load(s, contacts_);
+  sphere_pairs_stale_ = true;  // its indices point into the old halo
 }
 
 // The fluid-sphere pairs of this step and the voidage (2.50), or with double smoothing
@@ -231,7 +305,7 @@ void Simulation::rebuild_contact_neighbours() {
 void Simulation::compute_voidage() {
   FluidParticles& f = fluid_;
   const DemParticles& s = dem_;
-  sphere_pairs_.build(f, s, dem_cells_, scene_.sphere_kernel_scale);
+  sphere_pairs_.evaluate(f, s);
   if (!scene_.double_smoothing.enabled) {
     voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, scene_.voidage_floor);
     return;
@@ -254,8 +328,6 @@ void Simulation::update_smoothing_length() {
     f.h[a] = sigma * std::cbrt(f.mass[a] / f.rho[a]);  // (2.65)
     f.inv_h[a] = 1.0 / f.h[a];
   }
-  fluid_halo_.fill(f.h);
-  fluid_halo_.fill(f.inv_h);
 }
 
 void Simulation::update_pressure() {
@@ -271,7 +343,7 @@ void Simulation::update_pressure() {
 }
 
 void Simulation::refresh() {
-  rebuild_neighbours();
+  fluid_lists_stale_ = true;
   compute_fluid_side(true);
   dem_forces(false, 0.0);
 }
@@ -283,7 +355,9 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   DemParticles& s = dem_;
   Lap lap{timers_};
   update_smoothing_length();
-  if (fluid_cutoff() > cell_size_) rebuild_neighbours();  // h outgrew the bins (margin 5 %)
+  lap(kIntegrate);
+  update_neighbours();
+  lap(kNeighbours);
   compute_voidage();
   fluid_halo_.fill(f.eps);
   lap(kVoidage);
@@ -546,6 +620,7 @@ void Simulation::advance(bool hold_spheres) {
     steps_since_sort_ = 0;
     f.resize(f.n_owned);
     sort_owned_by_cell(f, cell_size_ / 2);
+    fluid_lists_stale_ = true;
     if (rotation_) contact_history_.save(dem_, contacts_);  // while the list matches the arrays
     dem_.resize(dem_.n_owned);
     if (dem_.n_owned > 0) sort_owned_by_cell(dem_, cell_size_ / 2);
@@ -569,8 +644,6 @@ void Simulation::advance(bool hold_spheres) {
   lap(kIntegrate);
   if (!hold_spheres) dem_half(dt, /*first_half=*/true);
   lap(kDem);
-  rebuild_neighbours();
-  lap(kNeighbours);
   compute_fluid_side(hold_spheres);
   lap.start = Clock::now();  // compute_fluid_side timed its own passes
 #pragma omp parallel for schedule(static)

@@ -85,6 +85,8 @@ class Simulation {
   std::vector<ContactHistory::Record> contact_records() const { return contact_history_.records(dem_, contacts_); }
   // Steps between re-sorting the owned particles into cell order (default 20; tests).
   void set_sort_interval(int steps) { sort_interval_ = steps; }
+  // Full rebuilds of the fluid's neighbour lists so far (Verlet skin; diagnostics).
+  long neighbour_builds() const { return neighbour_builds_; }
   Diagnostics diagnostics() const;
   std::size_t fluid_count() const;  // mobile fluid particles
   std::size_t wall_count() const;
@@ -105,7 +107,11 @@ class Simulation {
   void build_initial_state();
   void advance(bool hold_spheres);
   void rebuild_neighbours();
+  void update_neighbours();
   void rebuild_contact_neighbours();
+  void build_sphere_pairs();
+  double fluid_sphere_cutoff() const;
+  double halo_width(double needed, double wanted) const;
   void update_smoothing_length();
   void compute_voidage();
   void update_pressure();
@@ -151,6 +157,12 @@ class Simulation {
   int dem_substeps_ = 0;
   int steps_since_sort_ = 0;
   int sort_interval_ = 20;
+  // Verlet lists: positions and h_max at the last fluid build, the skin, and whether a
+  // list must be rebuilt before its next use.
+  std::vector<double> xr_, yr_, zr_;
+  double hmax_at_build_ = 0, fluid_skin_ = 0;
+  bool fluid_lists_stale_ = true, sphere_pairs_stale_ = true;
+  long neighbour_builds_ = 0;
   long steps_ = 0;
   std::size_t voidage_clamped_ = 0, omega_bounded_ = 0;
   double walls_on_spheres_z_ = 0.0;  // the wall particles' variational pairs on the spheres, last evaluation (N)
