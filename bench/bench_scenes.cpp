@@ -4,6 +4,7 @@
 //   column: the peers' `sph` scene (shared/peers/README.md): the same 4x4x6 mm water
 //           column, 13200 SPH particles (walls counted, as the peers count them),
 //           c0 = 1 m/s, no spheres; compare with LIGGGHTS' 0.421 M p-s/s (1 rank).
+//   dem_settle, dem_bed: the peers' dry DEM scenes (bench/dem_settle.yaml, bench/dem_bed.yaml).
 //   bed:    contact-dominated: 14400 free 100 um spheres on a simple-cubic lattice at
 //           voidage 0.4765 (layers 0.02 % of d apart, the bottom one just above the wall),
 //           stiffness 100 N/m (54 DEM sub-steps per SPH step), in a 2 mm water column: the
@@ -60,6 +61,14 @@ void BM_DemSettle(benchmark::State& state) {
   run_steps(state, load_scene(SPHDEM_BENCH_DIR "/dem_settle.yaml"), 13);
 }
 BENCHMARK(BM_DemSettle)->Unit(benchmark::kMillisecond)->Iterations(988)->UseRealTime();
+
+// The peers' dem_bed window (shared/peers/README.md): 1 000 warm-up and 10 000 timed DEM
+// steps at dt = t_c/20 in a dense fcc bed (bench/dem_bed.yaml), here 25 and 250 outer
+// steps of 40 sub-steps.
+void BM_DemBed(benchmark::State& state) {
+  run_steps(state, load_scene(SPHDEM_BENCH_DIR "/dem_bed.yaml"), 25);
+}
+BENCHMARK(BM_DemBed)->Unit(benchmark::kMillisecond)->Iterations(250)->UseRealTime();
 
 const char* const kBed = R"(
 name: bench_bed

@@ -18,7 +18,7 @@ void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_c
 
 void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s) {
   const long n = static_cast<long>(f.n_owned);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 64)  // rows differ: a bed, clear fluid
   for (long a = 0; a < n; ++a) {
     const double inv_h = inv_kernel_h(f, a);
     const double xa = f.x[a], ya = f.y[a], za = f.z[a];

@@ -13,7 +13,7 @@ void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, cons
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, 64)  // interleaved (rows differ); per-thread sums stay deterministic
     for (long b = 0; b < nf; ++b) {
       if (f.kind[b] != kFluid) continue;
       const double mb = f.mass[b], vb = mb / f.rho[b];

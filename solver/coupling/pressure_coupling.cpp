@@ -15,7 +15,7 @@ double couple_pressure_variationally(FluidParticles& f, DemParticles& s, const F
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
-#pragma omp for schedule(static) reduction(+ : walls_on_spheres_z)
+#pragma omp for schedule(static, 64) reduction(+ : walls_on_spheres_z)
     for (long a = 0; a < nf; ++a) {
       const double p_dyn = f.P[a] - ph(f.z[a]);
       const double vp = f.mass[a] / f.rho[a] * p_dyn;  // V_a P_a

@@ -4,7 +4,7 @@ namespace sphdem {
 
 void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs) {
   const long n = static_cast<long>(f.n_owned);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 64)  // rows differ in length
   for (long a = 0; a < n; ++a) {
     if (f.kind[a] != kFluid) continue;
     double rx = 0, ry = 0, rz = 0;

@@ -6,7 +6,7 @@ std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, cons
                                   double eps_floor, const BigSpheresSmoothedApart* big) {
   const long n = static_cast<long>(f.n_owned);
   std::size_t clamped = 0;
-#pragma omp parallel for schedule(static) reduction(+ : clamped)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : clamped)  // rows differ in length
   for (long a = 0; a < n; ++a) {
     double solid = 0.0, solid_over_d = 0.0;
     for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {

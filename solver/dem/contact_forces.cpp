@@ -1,7 +1,5 @@
 #include "dem/contact_forces.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -12,47 +10,26 @@ namespace sphdem {
 void ContactNeighbourList::build(const DemParticles& s, const CellList& cells, double skin_) {
   skin = skin_;
   const std::size_t n = s.n_owned;
-  offset.assign(n + 1, 0);
   double rmax = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) rmax = std::max(rmax, s.radius[i]);
   const double rc_max = 2.0 * rmax + skin;
-  // Each thread fills a contiguous block of rows, then the blocks are concatenated:
-  // the same list as one thread would build.
-  const int nt = n > 256 ? omp_get_max_threads() : 1;
-  if (static_cast<int>(local_.size()) < nt) local_.resize(nt);
-  std::vector<std::size_t> lo(nt + 1, 0);
-#pragma omp parallel num_threads(nt)
-  {
-    const int t = omp_get_thread_num(), T = omp_get_num_threads();
-    const std::size_t b = n * t / T, e = n * (t + 1) / T;
-    auto& buf = local_[t];
-    buf.clear();
-    for (std::size_t i = b; i < e; ++i) {
-      cells.for_each_neighbour(s.x[i], s.y[i], s.z[i], rc_max * rc_max,
-                               [&](std::uint32_t j, double, double, double, double r2) {
-                                 if (j == i) return;
-                                 const double rc = s.radius[i] + s.radius[j] + skin;
-                                 if (r2 < rc * rc) buf.push_back(j);
-                               });
-      offset[i + 1] = static_cast<std::uint32_t>(buf.size());  // local for now
-    }
-    lo[t + 1] = buf.size();
-#pragma omp barrier
-#pragma omp single
-    {
-      for (int k = 0; k < T; ++k) lo[k + 1] += lo[k];
-      neighbour.resize(lo[T]);
-    }
-    for (std::size_t i = b; i < e; ++i) offset[i + 1] += static_cast<std::uint32_t>(lo[t]);
-    std::copy(buf.begin(), buf.end(), neighbour.begin() + lo[t]);
-  }
+  rows_.build(n, offset, neighbour, [&](std::size_t i, std::vector<std::uint32_t>& out) {
+    cells.for_each_neighbour(s.x[i], s.y[i], s.z[i], rc_max * rc_max,
+                             [&](std::uint32_t j, double, double, double, double r2) {
+                               if (j == i) return;
+                               const double rc = s.radius[i] + s.radius[j] + skin;
+                               if (r2 < rc * rc) out.push_back(j);
+                             });
+  });
 }
 
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
                             const LinearSpringDashpot& law, double wall_z) {
   const long n = static_cast<long>(s.n_owned);
   const double bf = law.beta_factor();
-#pragma omp parallel for schedule(static) if (n > 256)  // a parallel region costs more than a few spheres
+  // Chunks taken in turn: a bed and a dilute suspension above it differ in contacts per
+  // sphere. Below 256 spheres a parallel region costs more than the work.
+#pragma omp parallel for schedule(dynamic, 256) if (n > 256)
   for (long i = 0; i < n; ++i) {
     double fx = 0, fy = 0, fz = 0, dmax = 0;
     const double ri = s.radius[i], mi = s.mass[i];
@@ -98,7 +75,7 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, c
     throw std::logic_error("compute_contact_forces: the contact history is not loaded for this list");
   const long n = static_cast<long>(n_owned);
   const double bf = law.beta_factor();
-#pragma omp parallel for schedule(static) if (n > 256)  // as the normal-only pass
+#pragma omp parallel for schedule(dynamic, 256) if (n > 256)  // as the normal-only pass
   for (long i = 0; i < n; ++i) {
     double fx = 0, fy = 0, fz = 0, qx = 0, qy = 0, qz = 0, dmax = 0;
     const double ri = s.radius[i], mi = s.mass[i];

@@ -7,6 +7,7 @@
 #include "dem/contact_registry.hpp"
 #include "dem/dem_particles.hpp"
 #include "domain/cell_list.hpp"
+#include "domain/compressed_rows.hpp"
 #include "domain/periodic_halo.hpp"
 
 namespace sphdem {
@@ -21,7 +22,7 @@ struct ContactNeighbourList {
   void build(const DemParticles& s, const CellList& cells, double skin);
 
  private:
-  std::vector<std::vector<std::uint32_t>> local_;  // per-thread rows, kept between builds
+  CompressedRowBuilder rows_;
 };
 
 // Contact force (cx,cy,cz) on every owned sphere from the linear spring-dashpot

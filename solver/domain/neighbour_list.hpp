@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "domain/cell_list.hpp"
+#include "domain/compressed_rows.hpp"
 
 namespace sphdem {
 
@@ -26,7 +27,7 @@ struct NeighbourList {
              double rc, bool exclude_self, bool half = false);
 
  private:
-  std::vector<std::vector<std::uint32_t>> local_;  // per-thread rows, kept to avoid page faults
+  CompressedRowBuilder rows_;
 };
 
 }  // namespace sphdem

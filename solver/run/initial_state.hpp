@@ -14,9 +14,13 @@ void place_particles(const Scene& scene, FluidParticles& fluid, DemParticles& sp
 // Lattice spacing per axis and site count of a constant-porosity block (thesis §4.5):
 // a = (V_p / (1 - eps))^(1/3), adjusted to a whole number of sites on periodic axes
 // the block spans, with a_z chosen to keep the target voidage.
+// Simple cubic: count[k] sites at spacing[k] from origin[k]. Fcc: spacing[] is the cubic
+// cell, count[0..1] cells across, count[2] (100) layers spacing[2]/2 apart, two sites a
+// layer a cell (parity p of the layer: (p/2, 0) and ((1-p)/2, 1/2) of the cell).
 struct BlockLattice {
   std::array<double, 3> spacing{}, origin{};
   std::array<int, 3> count{};
+  bool fcc = false;
   double voidage = 0;  // actual voidage of the lattice
 };
 BlockLattice block_lattice(const Scene& scene, const ParticleGroupSpec& group, double diameter);

@@ -421,6 +421,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       g.velocity_jitter = r.number("velocity_jitter", 0.0, 0.0, kInf);
       g.velocity_seed = r.whole64("velocity_seed", 1, 0, std::numeric_limits<std::int64_t>::max());
       g.rigid = r.boolean("rigid", false);
+      if (g.kind == ParticleGroupSpec::Kind::kLattice)
+        g.fcc = r.choice("lattice", "simple_cubic", {"simple_cubic", "fcc"}) == "fcc";
       if (g.kind == ParticleGroupSpec::Kind::kSingle) {
         g.position = r.vec3("position", {0.5 * sc.box.hi[0], 0.5 * sc.box.hi[1], 0.5 * sc.box.hi[2]});
         for (int d = 0; d < 3; ++d)
@@ -436,7 +438,9 @@ Scene parse(const YAML::Node& root, const std::string& file) {
           if (g.hi[d] <= g.lo[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max <= min)");
         }
         if (g.kind == ParticleGroupSpec::Kind::kLattice) {
-          g.voidage = r.number("voidage", g.voidage, 1.0 - M_PI / 6.0, 1.0, false, true);
+          // the closest packing of the lattice: simple cubic 1 - pi/6, fcc 1 - pi/(3 sqrt 2)
+          const double densest = g.fcc ? 1.0 - M_PI / (3.0 * std::sqrt(2.0)) : 1.0 - M_PI / 6.0;
+          g.voidage = r.number("voidage", g.voidage, densest, 1.0, false, true);
           if (g.mixture.size() > 1) g.seed = r.whole64("seed", 0, 0, std::numeric_limits<std::int64_t>::max());
         } else {
           // 1 - 0.64: no random packing is denser than random close packing. Random
@@ -727,6 +731,7 @@ std::string scene_to_yaml(const Scene& sc) {
       e << YAML::Key << "max" << YAML::Value;
       vec(g.hi);
       e << YAML::Key << "voidage" << YAML::Value << g.voidage;
+      if (!random) e << YAML::Key << "lattice" << YAML::Value << (g.fcc ? "fcc" : "simple_cubic");
       if (random || g.mixture.size() > 1) e << YAML::Key << "seed" << YAML::Value << g.seed;
     }
     e << YAML::Key << "velocity" << YAML::Value;

@@ -2,6 +2,7 @@
 // resolution of the automatic values, and the scene_to_yaml round trip (case.yaml).
 // Also keeps cases/README.md in step with the loader (every accepted key, every case,
 // every log.csv column is documented there).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -991,4 +992,52 @@ TEST(SceneCoupling, DoubleSmoothingKeys) {
                                      kFile);
   EXPECT_TRUE(back.double_smoothing.enabled);
   EXPECT_EQ(back.double_smoothing.h_over_d, 2.0);
+}
+
+// An fcc block at its closest packing (the peers' dem_bed): nearest sites exactly one
+// diameter apart, 4 sites a cubic cell of side sqrt(2) d, (100) layers sqrt(2) d / 2 apart,
+// the bottom layer touching the wall.
+TEST(SceneLoader, FccLatticeAtClosestPacking) {
+  const double d = 1e-4, a = std::sqrt(2.0) * d, eps = 1.0 - M_PI / (3.0 * std::sqrt(2.0));
+  const std::string yaml = fmt::format(R"(
+domain: {{size: [{L}, {L}, 0.002]}}
+fluid: {{enabled: false}}
+species: [{{name: glass, diameter: 1.0e-4, density: 2500}}]
+particles:
+  - {{type: lattice, lattice: fcc, species: glass, min: [0, 0, {z0}], max: [{L}, {L}, {z1}], voidage: {eps}}}
+)", fmt::arg("L", 8 * a), fmt::arg("z0", 0.5 * d - 0.25 * a), fmt::arg("z1", 0.5 * d - 0.25 * a + 3.5 * a),
+                                       fmt::arg("eps", eps));
+  const Scene sc = load_scene_text(yaml, kFile);
+  const BlockLattice L = block_lattice(sc, sc.particles[0], d);
+  EXPECT_TRUE(L.fcc);
+  EXPECT_EQ(L.count[0], 8);
+  EXPECT_EQ(L.count[2], 7);  // layers a/2 apart in 3.5 a
+  EXPECT_NEAR(L.spacing[0], a, 1e-15);
+  EXPECT_NEAR(L.spacing[2], a, 1e-15);
+  EXPECT_NEAR(L.voidage, eps, 1e-12);
+  FluidParticles f;
+  DemParticles s;
+  place_particles(sc, f, s);
+  ASSERT_EQ(s.size(), 8u * 8u * 7u * 2u);
+  double zmin = 1.0, nearest = 1.0;
+  std::vector<int> touching(s.size(), 0);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    zmin = std::min(zmin, s.z[i]);
+    for (std::size_t j = 0; j < s.size(); ++j) {
+      if (j == i) continue;
+      double r2 = 0;
+      for (int k = 0; k < 3; ++k) {
+        double dk = (k == 0 ? s.x[i] - s.x[j] : k == 1 ? s.y[i] - s.y[j] : s.z[i] - s.z[j]);
+        if (k < 2) dk -= 8 * a * std::round(dk / (8 * a));  // periodic in x and y
+        r2 += dk * dk;
+      }
+      nearest = std::min(nearest, std::sqrt(r2));
+      touching[i] += std::sqrt(r2) < d * (1 + 1e-9);
+    }
+  }
+  EXPECT_NEAR(nearest, d, 1e-12 * d);
+  EXPECT_NEAR(zmin, 0.5 * d, 1e-12 * d);
+  EXPECT_EQ(*std::max_element(touching.begin(), touching.end()), 12);  // an inner site: 12 neighbours
+  const Scene again = load_scene_text(scene_to_yaml(sc), kFile);  // written back as read
+  EXPECT_TRUE(again.particles[0].fcc);
 }
