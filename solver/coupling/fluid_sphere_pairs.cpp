@@ -16,7 +16,7 @@ void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_c
   count.assign(f.n_owned, 0);
 }
 
-void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s) {
+void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s, bool with_gradient) {
   const long n = static_cast<long>(f.n_owned);
 #pragma omp parallel for schedule(dynamic, 64)  // rows differ: a bed, clear fluid
   for (long a = 0; a < n; ++a) {
@@ -30,7 +30,7 @@ void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s) 
       if (q >= kernel::kSupport) continue;
       sphere[kept] = j;
       w[kept] = kernel::w_q(q, inv_h);
-      grad[kept] = kernel::grad_factor_q(q, inv_h);
+      if (with_gradient) grad[kept] = kernel::grad_factor_q(q, inv_h);
       ++kept;
     }
     count[a] = kept - list.begin(a);

@@ -45,8 +45,9 @@ void PeriodicHalo::build(const Box& box, double width, const double* x, const do
 }
 
 void PeriodicHalo::fill_positions(double* x, double* y, double* z) const {
-  const std::size_t n = source_.size();
-  for (std::size_t g = 0; g < n; ++g) {
+  const long n = static_cast<long>(source_.size());
+#pragma omp parallel for schedule(static) if (n > kMinParallelCopies)
+  for (long g = 0; g < n; ++g) {
     const std::uint32_t s = source_[g];
     x[n_owned_ + g] = x[s] + sx_[g];
     y[n_owned_ + g] = y[s] + sy_[g];

@@ -29,6 +29,9 @@ struct HaloImages {
 
 class PeriodicHalo {
  public:
+  // Below this many copies a fill runs on one thread (a parallel region costs more).
+  static constexpr long kMinParallelCopies = 4096;
+
   // Builds the ghost list: every owned particle within `width` of a periodic face
   // gets an image on the far side (edges and corners included); with width > L/2 a
   // particle near both faces gets both, so a cut-off above half the box finds every image
@@ -45,8 +48,9 @@ class PeriodicHalo {
   // Copies a per-particle field from each ghost's owned source.
   template <class T>
   void fill(T* field) const {
-    const std::size_t n = source_.size();
-    for (std::size_t g = 0; g < n; ++g) field[n_owned_ + g] = field[source_[g]];
+    const long n = static_cast<long>(source_.size());
+#pragma omp parallel for schedule(static) if (n > kMinParallelCopies)
+    for (long g = 0; g < n; ++g) field[n_owned_ + g] = field[source_[g]];
   }
   template <class Vec>
   void fill(Vec& field) const {

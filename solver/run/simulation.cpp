@@ -305,7 +305,7 @@ void Simulation::rebuild_contact_neighbours() {
 void Simulation::compute_voidage() {
   FluidParticles& f = fluid_;
   const DemParticles& s = dem_;
-  sphere_pairs_.evaluate(f, s);
+  sphere_pairs_.evaluate(f, s, scene_.pressure_coupling == PressureCoupling::kVariational);
   if (!scene_.double_smoothing.enabled) {
     voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, scene_.voidage_floor);
     return;
@@ -545,8 +545,13 @@ void Simulation::dem_half(double dt, bool first_half) {
   a_old_z_.resize(n);
   for (int k = 0; k < per_half; ++k) {
     double max_disp2 = 0.0;
+    const double finish = k > 0 ? 0.5 * h : 0.0;  // the previous sub-step's corrector, fused
 #pragma omp parallel for schedule(static) reduction(max : max_disp2) if (n > kMinParallelSpheres)
     for (long j = 0; j < n; ++j) {
+      // v_n + h (a_old + a_new)/2 of the sub-step before (below for the last one)
+      s.vx[j] += finish * (s.ax[j] - a_old_x_[j]);
+      s.vy[j] += finish * (s.ay[j] - a_old_y_[j]);
+      s.vz[j] += finish * (s.az[j] - a_old_z_[j]);
       // x += h (v + h a/2); v -> v + h a_old, the predicted end-of-step velocity at which
       // the velocity-dependent forces (dashpot, drag) are evaluated: second order, where
       // the half-step velocity would make the dashpot first order (e_n off by ~eta h/2).
@@ -562,7 +567,10 @@ void Simulation::dem_half(double dt, bool first_half) {
       const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
       max_disp2 = std::max(max_disp2, dx * dx + dy * dy + dz * dz);
     }
-    if (rotation_) predict_spin(s, h, torque_old_);
+    if (rotation_) {
+      if (k > 0) correct_spin(s, h, torque_old_);
+      predict_spin(s, h, torque_old_);
+    }
     if (max_disp2 > half_skin * half_skin) {
       rebuild_contact_neighbours();
     } else {
@@ -572,14 +580,14 @@ void Simulation::dem_half(double dt, bool first_half) {
         for (auto* v : {&s.wx, &s.wy, &s.wz}) dem_halo_.fill(*v);
     }
     dem_forces(true, 0.5 * h / dt, h);
-#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
-    for (long j = 0; j < n; ++j) {  // v_n + h (a_old + a_new)/2
-      s.vx[j] += 0.5 * h * (s.ax[j] - a_old_x_[j]);
-      s.vy[j] += 0.5 * h * (s.ay[j] - a_old_y_[j]);
-      s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[j]);
-    }
-    if (rotation_) correct_spin(s, h, torque_old_);
   }
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
+  for (long j = 0; j < n; ++j) {  // the last sub-step's v_n + h (a_old + a_new)/2
+    s.vx[j] += 0.5 * h * (s.ax[j] - a_old_x_[j]);
+    s.vy[j] += 0.5 * h * (s.ay[j] - a_old_y_[j]);
+    s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[j]);
+  }
+  if (rotation_) correct_spin(s, h, torque_old_);
 }
 
 void Simulation::relax() {
