@@ -20,14 +20,16 @@ void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s, 
   const long n = static_cast<long>(f.n_owned);
 #pragma omp parallel for schedule(dynamic, 64)  // rows differ: a bed, clear fluid
   for (long a = 0; a < n; ++a) {
-    const double inv_h = inv_kernel_h(f, a);
+    const double inv_h = inv_kernel_h(f, a), reach = kernel::kSupport / inv_h, reach2 = reach * reach;
     const double xa = f.x[a], ya = f.y[a], za = f.z[a];
     std::uint32_t kept = list.begin(a);
     for (std::uint32_t k = list.begin(a); k < list.end(a); ++k) {
       const std::uint32_t j = list.neighbour[k];
       const double dx = xa - s.x[j], dy = ya - s.y[j], dz = za - s.z[j];
-      const double q = std::sqrt(dx * dx + dy * dy + dz * dz) * inv_h;
-      if (q >= kernel::kSupport) continue;
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 >= reach2) continue;
+      const double q = std::sqrt(r2) * inv_h;
+      if (q >= kernel::kSupport) continue;  // round-off at the edge
       sphere[kept] = j;
       w[kept] = kernel::w_q(q, inv_h);
       if (with_gradient) grad[kept] = kernel::grad_factor_q(q, inv_h);

@@ -18,14 +18,16 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
     const int t = omp_get_thread_num();
 #pragma omp for schedule(static)
     for (long a = 0; a < n; ++a) {
-      const double inv_ha = f.inv_h[a], ma = f.mass[a];
+      const double inv_ha = f.inv_h[a], ma = f.mass[a], ha = f.h[a];
       const double xa = f.x[a], ya = f.y[a], za = f.z[a];
       const double vxa = f.vx[a], vya = f.vy[a], vza = f.vz[a];
       double sum_dwdh = ma * kernel::dw_dh_q(0.0, inv_ha), sum_div = 0.0;  // self term of (2.54)
       for (std::uint32_t k = half.begin(a); k < half.end(a); ++k) {
         const std::uint32_t b = half.neighbour[k];
         const double dx = xa - f.x[b], dy = ya - f.y[b], dz = za - f.z[b];
-        const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+        const double r2 = dx * dx + dy * dy + dz * dz, reach = kernel::kSupport * std::max(ha, f.h[b]);
+        if (r2 >= reach * reach) continue;  // in the list's skin only
+        const double r = std::sqrt(r2);
         const double udotr = (vxa - f.vx[b]) * dx + (vya - f.vy[b]) * dy + (vza - f.vz[b]) * dz;
         const double qa = r * inv_ha;
         if (qa < kernel::kSupport) {

@@ -28,8 +28,10 @@ void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& half, co
         const std::uint32_t b = half.neighbour[k];
         const double dx = xa - f.x[b], dy = ya - f.y[b], dz = za - f.z[b];
         const double r2 = dx * dx + dy * dy + dz * dz;
+        const double hb = f.h[b], reach = kernel::kSupport * std::max(ha, hb);
+        if (r2 >= reach * reach) continue;  // in the list's skin only
         const double r = std::sqrt(r2), inv_r = 1.0 / r;
-        const double hb = f.h[b], inv_hb = f.inv_h[b];
+        const double inv_hb = f.inv_h[b];
         const double Fa = kernel::grad_factor_q(r * inv_ha, inv_ha);
         const double Fb = kernel::grad_factor_q(r * inv_hb, inv_hb);
         if (Fa == 0.0 && Fb == 0.0) continue;
