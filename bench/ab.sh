@@ -21,8 +21,13 @@ END="${END:-0.1}"
 for bin in "$A" "$B"; do [ -x "$bin" ] || { echo "ab.sh: no program $bin" >&2; exit 2; }; done
 OUT="$(mktemp -d -t sphdem-ab.XXXXXX)"
 echo "# ab.sh $(date -u '+%Y-%m-%dT%H:%M:%SZ') host=$(hostname) nproc=$(nproc) load1=$(cut -d' ' -f1 /proc/loadavg)"
-echo "# A = $A ($(git -C "$(dirname "$1")" rev-parse --short HEAD 2>/dev/null || echo '?'))"
-echo "# B = $B"
+commit() {  # build directory -> the commit of its source tree (from CMakeCache.txt)
+  local src
+  src="$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$1/CMakeCache.txt" 2>/dev/null)"
+  git -C "${src:-.}" rev-parse --short HEAD 2>/dev/null || echo '?'
+}
+echo "# A = $A (source at $(commit "$1"))"
+echo "# B = $B (source at $(commit "$2"))"
 echo "# OMP_NUM_THREADS=$THREADS, time.end=$END s, $ROUNDS rounds, runs in $OUT"
 
 run() {  # build-binary scene tag -> wall seconds
