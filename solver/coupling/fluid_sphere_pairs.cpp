@@ -6,8 +6,8 @@
 
 namespace sphdem {
 
-void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale,
-                                  double rc) {
+void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_cells,
+                                  double kernel_scale, double rc) {
   scale = kernel_scale;
   list.build(dem_cells, f.x.data(), f.y.data(), f.z.data(), f.n_owned, rc, false);
   sphere.resize(list.neighbour.size());
@@ -16,11 +16,13 @@ void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_c
   count.assign(f.n_owned, 0);
 }
 
-void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s, bool with_gradient) {
+void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s,
+                                bool with_gradient) {
   const long n = static_cast<long>(f.n_owned);
 #pragma omp parallel for schedule(dynamic, 64)  // rows differ: a bed, clear fluid
   for (long a = 0; a < n; ++a) {
-    const double inv_h = inv_kernel_h(f, a), reach = kernel::kSupport / inv_h, reach2 = reach * reach;
+    const double inv_h = inv_kernel_h(f, a), reach = kernel::kSupport / inv_h,
+                 reach2 = reach * reach;
     const double xa = f.x[a], ya = f.y[a], za = f.z[a];
     std::uint32_t kept = list.begin(a);
     for (std::uint32_t k = list.begin(a); k < list.end(a); ++k) {

@@ -18,11 +18,11 @@
 namespace sphdem {
 
 struct FluidSpherePairs {
-  NeighbourList list;                  // Verlet list: rows owned SPH particles, entries sphere indices
-  std::vector<std::uint32_t> count;    // per row: entries within the support (stored first)
-  std::vector<std::uint32_t> sphere;   // per entry: the sphere's index, row by row as list
-  std::vector<double> w;               // W(r_aj, H_a) per entry within the support
-  std::vector<double> grad;            // grad_a W_aj = grad * (x_a - x_j) (evaluate with_gradient)
+  NeighbourList list;  // Verlet list: rows owned SPH particles, entries sphere indices
+  std::vector<std::uint32_t> count;   // per row: entries within the support (stored first)
+  std::vector<std::uint32_t> sphere;  // per entry: the sphere's index, row by row as list
+  std::vector<double> w;              // W(r_aj, H_a) per entry within the support
+  std::vector<double> grad;           // grad_a W_aj = grad * (x_a - x_j) (evaluate with_gradient)
   double scale = 1.0;  // H_a / h_a of the mobile fluid (scene key coupling.sphere_kernel_scale)
 
   // Entries [begin(a), end(a)) of row a are the spheres within 2 H_a.
@@ -40,12 +40,14 @@ struct FluidSpherePairs {
 
   // The Verlet list: spheres binned in dem_cells (owned + halo) within rc of each owned
   // SPH particle; rc >= 2 scale max h, up to dem_cells.max_cutoff().
-  void build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale, double rc);
+  void build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale,
+                  double rc);
   // Kernel values at the current positions (every step); the gradient factors only
   // with_gradient (the variational pressure coupling reads them).
   void evaluate(const FluidParticles& f, const DemParticles& s, bool with_gradient = true);
   // Both, at the cells' cut-off (tests).
-  void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells, double kernel_scale = 1.0) {
+  void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells,
+             double kernel_scale = 1.0) {
     build_list(f, dem_cells, kernel_scale, dem_cells.max_cutoff());
     evaluate(f, s);
   }

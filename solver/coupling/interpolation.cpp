@@ -13,7 +13,8 @@ void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, cons
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
-#pragma omp for schedule(static, 64)  // interleaved (rows differ); per-thread sums stay deterministic
+    // Interleaved chunks (rows differ in length); per-thread sums stay deterministic.
+#pragma omp for schedule(static, 64)
     for (long b = 0; b < nf; ++b) {
       if (f.kind[b] != kFluid) continue;
       const double mb = f.mass[b], vb = mb / f.rho[b];

@@ -2,7 +2,6 @@
 
 #include <omp.h>
 
-
 namespace sphdem {
 
 double couple_pressure_variationally(FluidParticles& f, DemParticles& s, const FluidSpherePairs& pairs,

@@ -18,7 +18,8 @@ class CompressedRowBuilder {
 
   // row(i, out) appends the entries of row i to out (a std::vector<std::uint32_t>).
   template <class Row>
-  void build(std::size_t n, std::vector<std::uint32_t>& offset, std::vector<std::uint32_t>& entries, Row&& row) {
+  void build(std::size_t n, std::vector<std::uint32_t>& offset, std::vector<std::uint32_t>& entries,
+             Row&& row) {
     const long nb = static_cast<long>((n + kRowsPerBlock - 1) / kRowsPerBlock);
     if (static_cast<long>(block_.size()) < nb) block_.resize(nb);
     start_.assign(nb + 1, 0);

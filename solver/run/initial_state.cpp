@@ -13,7 +13,7 @@ namespace sphdem {
 BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g, double d) {
   BlockLattice L;
   L.fcc = g.fcc;
-  const double basis = g.fcc ? 4.0 : 1.0;  // sites per cubic cell
+  const double basis = g.fcc ? 4.0 : 1.0;           // sites per cubic cell
   const double V = basis * M_PI * d * d * d / 6.0;  // solid volume per cell
   const double a = std::cbrt(V / (1.0 - g.voidage));
   for (int k = 0; k < 2; ++k) {
@@ -143,18 +143,20 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
     }
     if (L.fcc) {  // nearest sites: half a face diagonal, in a layer and between layers
       const double ax = L.spacing[0], ay = L.spacing[1], az = L.spacing[2];
-      const double nearest = 0.5 * std::sqrt(std::min({ax * ax + ay * ay, ax * ax + az * az, ay * ay + az * az}));
+      const double nearest =
+          0.5 * std::sqrt(std::min({ax * ax + ay * ay, ax * ax + az * az, ay * ay + az * az}));
       if (nearest < d_max * (1.0 - 1e-9))
-        throw SceneError(fmt::format("{}: key 'particles.{}.voidage': fcc sites {} m apart, below the largest "
-                                     "diameter {} m; raise the voidage (fcc packs to 0.2595 at the least)",
-                                     sc.source, gi, nearest, d_max));
+        throw SceneError(
+            fmt::format("{}: key 'particles.{}.voidage': fcc sites {} m apart, below the largest "
+                        "diameter {} m; raise the voidage (fcc packs to 0.2595 at the least)",
+                        sc.source, gi, nearest, d_max));
     }
     const double dz = L.fcc ? 0.5 * L.spacing[2] : L.spacing[2];  // between layers
     if (L.origin[2] - 0.5 * dz < 0 || L.origin[2] < 0.5 * d_max * (1.0 - 1e-12))
       throw SceneError(fmt::format("{}: key 'particles.{}.min': the block cuts the bottom wall", sc.source, gi));
     const int per_cell = L.fcc ? 2 : 1;  // sites a cell in one layer
-    const std::vector<int> site =
-        deal_species(sc, g, static_cast<std::size_t>(L.count[0]) * L.count[1] * L.count[2] * per_cell);
+    const std::vector<int> site = deal_species(
+        sc, g, static_cast<std::size_t>(L.count[0]) * L.count[1] * L.count[2] * per_cell);
     std::size_t k = 0;
     for (int iz = 0; iz < L.count[2]; ++iz)
       for (int iy = 0; iy < L.count[1]; ++iy)
@@ -162,8 +164,8 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
           for (int b = 0; b < per_cell; ++b, ++k) {
             const double p = L.fcc ? 0.5 * (iz % 2) : 0.0;  // the layer's parity shifts its sites
             const double ox = b == 0 ? p : 0.5 - p, oy = b == 0 ? 0.0 : 0.5;
-            add(L.origin[0] + (ix + ox) * L.spacing[0], L.origin[1] + (iy + oy) * L.spacing[1], L.origin[2] + iz * dz,
-                site[k], 0.5 * sc.species[site[k]].diameter);
+            add(L.origin[0] + (ix + ox) * L.spacing[0], L.origin[1] + (iy + oy) * L.spacing[1],
+                L.origin[2] + iz * dz, site[k], 0.5 * sc.species[site[k]].diameter);
           }
   }
   s.n_owned = s.size();

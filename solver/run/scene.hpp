@@ -51,7 +51,8 @@ struct ParticleGroupSpec {
   std::array<double, 3> position{0, 0, 0};  // single: centre
   std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};  // lattice, random: region
   double voidage = 0.9;                     // lattice, random: target voidage of the region
-  bool fcc = false;  // lattice: face-centred cubic (4 sites a cell, in (100) layers a/2 apart), else simple cubic
+  bool fcc = false;  // lattice: face-centred cubic (4 sites a cell, in (100) layers a/2 apart),
+                     // else simple cubic
   std::vector<std::string> mixture;         // random: species names (one or more)
   std::vector<double> fractions;            // random: number fractions of `mixture` (sum 1)
   std::int64_t seed = 0;                    // random: seed of the positions and diameters

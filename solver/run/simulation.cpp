@@ -187,7 +187,8 @@ void Simulation::rebuild_neighbours() {
   fluid_skin_ = kFluidSkin * hmax_at_build_;
   cell_size_ = support + fluid_skin_;
   f.resize(f.n_owned);
-  fluid_halo_.build(box, halo_width(support, cell_size_), f.x.data(), f.y.data(), f.z.data(), f.n_owned);
+  fluid_halo_.build(box, halo_width(support, cell_size_), f.x.data(), f.y.data(), f.z.data(),
+                    f.n_owned);
   f.resize(f.n_owned + fluid_halo_.n_ghost());
   fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
   for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.eps}) fluid_halo_.fill(*v);
@@ -281,9 +282,10 @@ void Simulation::rebuild_contact_neighbours() {
   s.resize(s.n_owned);
   // (the big spheres' own kernel of the double smoothing reaches further, plus the skin
   // they may move before the next rebuild)
-  const double needed = std::max({scene_.sphere_kernel_scale * kernel::kSupport * hmax_at_build_, 2.0 * rmax,
-                                  big_cutoff_});
-  const double wanted = std::max({fluid_sphere_cutoff(), contact_cut, big_cutoff_ > 0 ? big_cutoff_ + skin : 0.0});
+  const double needed = std::max(
+      {scene_.sphere_kernel_scale * kernel::kSupport * hmax_at_build_, 2.0 * rmax, big_cutoff_});
+  const double wanted =
+      std::max({fluid_sphere_cutoff(), contact_cut, big_cutoff_ > 0 ? big_cutoff_ + skin : 0.0});
   dem_halo_.build(box, halo_width(needed, wanted), s.x.data(), s.y.data(), s.z.data(), s.n_owned);
   s.resize(s.n_owned + dem_halo_.n_ghost());
   dem_halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());

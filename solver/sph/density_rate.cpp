@@ -25,7 +25,8 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
       for (std::uint32_t k = half.begin(a); k < half.end(a); ++k) {
         const std::uint32_t b = half.neighbour[k];
         const double dx = xa - f.x[b], dy = ya - f.y[b], dz = za - f.z[b];
-        const double r2 = dx * dx + dy * dy + dz * dz, reach = kernel::kSupport * std::max(ha, f.h[b]);
+        const double r2 = dx * dx + dy * dy + dz * dz,
+                     reach = kernel::kSupport * std::max(ha, f.h[b]);
         if (r2 >= reach * reach) continue;  // in the list's skin only
         const double r = std::sqrt(r2);
         const double udotr = (vxa - f.vx[b]) * dx + (vya - f.vy[b]) * dy + (vza - f.vz[b]) * dz;

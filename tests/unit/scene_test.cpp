@@ -2,6 +2,8 @@
 // resolution of the automatic values, and the scene_to_yaml round trip (case.yaml).
 // Also keeps cases/README.md in step with the loader (every accepted key, every case,
 // every log.csv column is documented there).
+#include "run/scene.hpp"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -17,7 +19,6 @@
 
 #include "run/initial_state.hpp"
 #include "run/run_log.hpp"
-#include "run/scene.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphdem;
@@ -999,14 +1000,16 @@ TEST(SceneCoupling, DoubleSmoothingKeys) {
 // the bottom layer touching the wall.
 TEST(SceneLoader, FccLatticeAtClosestPacking) {
   const double d = 1e-4, a = std::sqrt(2.0) * d, eps = 1.0 - M_PI / (3.0 * std::sqrt(2.0));
-  const std::string yaml = fmt::format(R"(
+  const std::string yaml =
+      fmt::format(R"(
 domain: {{size: [{L}, {L}, 0.002]}}
 fluid: {{enabled: false}}
 species: [{{name: glass, diameter: 1.0e-4, density: 2500}}]
 particles:
   - {{type: lattice, lattice: fcc, species: glass, min: [0, 0, {z0}], max: [{L}, {L}, {z1}], voidage: {eps}}}
-)", fmt::arg("L", 8 * a), fmt::arg("z0", 0.5 * d - 0.25 * a), fmt::arg("z1", 0.5 * d - 0.25 * a + 3.5 * a),
-                                       fmt::arg("eps", eps));
+)",
+                  fmt::arg("L", 8 * a), fmt::arg("z0", 0.5 * d - 0.25 * a),
+                  fmt::arg("z1", 0.5 * d - 0.25 * a + 3.5 * a), fmt::arg("eps", eps));
   const Scene sc = load_scene_text(yaml, kFile);
   const BlockLattice L = block_lattice(sc, sc.particles[0], d);
   EXPECT_TRUE(L.fcc);
@@ -1037,7 +1040,8 @@ particles:
   }
   EXPECT_NEAR(nearest, d, 1e-12 * d);
   EXPECT_NEAR(zmin, 0.5 * d, 1e-12 * d);
-  EXPECT_EQ(*std::max_element(touching.begin(), touching.end()), 12);  // an inner site: 12 neighbours
+  // an inner site: 12 neighbours
+  EXPECT_EQ(*std::max_element(touching.begin(), touching.end()), 12);
   const Scene again = load_scene_text(scene_to_yaml(sc), kFile);  // written back as read
   EXPECT_TRUE(again.particles[0].fcc);
 }
