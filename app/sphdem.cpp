@@ -2,17 +2,19 @@
 //   sphdem run [CASE.yaml] --out DIR [--set key.path=value ...]
 //   sphdem check CASE.yaml [--set ...]
 //   sphdem figures DIR
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
+#include "analysis/contact_network.hpp"
+#include "analysis/voidage_grid.hpp"
+#include "propagator/simulation.hpp"
 #include "run/runner.hpp"
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "scene/scene.hpp"
 
 #ifdef SPHDEM_HAVE_CATALYST
 #include "insitu.hpp"
@@ -79,20 +81,22 @@ int main(int argc, char** argv) {
       io.snapshot_every = scene.insitu.snapshot_every;
       std::filesystem::create_directories(out_dir);
       insitu = std::make_unique<sphdem::InSitu>(scene, io);
-      opt.hooks.push_back({"in-situ analysis", scene.insitu.every, [&](const sphdem::Simulation& sim) {
-                             voidage = sim.voidage_on_grid(grid, scene.fluid.smoothing_factor * scene.fluid.spacing);
-                             const std::vector<int> contacts = sim.contact_counts();
-                             sphdem::InSituFrame fr;
-                             fr.fluid = &sim.fluid();
-                             fr.spheres = &sim.spheres();
-                             fr.contact_count = &contacts;
-                             fr.grid = grid;
-                             fr.whole_extent = grid.extent;
-                             fr.voidage = &voidage;
-                             fr.time = sim.time();
-                             fr.step = sim.step_count();
-                             insitu->execute(fr);
-                           }});
+      opt.hooks.push_back(
+          {"in-situ analysis", scene.insitu.every, [&](const sphdem::Simulation& sim) {
+             voidage =
+                 voidage_on_grid(sim, grid, scene.fluid.smoothing_factor * scene.fluid.spacing);
+             const std::vector<int> contacts = contact_counts(sim.spheres(), sim.contact_list());
+             sphdem::InSituFrame fr;
+             fr.fluid = &sim.fluid();
+             fr.spheres = &sim.spheres();
+             fr.contact_count = &contacts;
+             fr.grid = grid;
+             fr.whole_extent = grid.extent;
+             fr.voidage = &voidage;
+             fr.time = sim.time();
+             fr.step = sim.step_count();
+             insitu->execute(fr);
+           }});
       insitu_ran = true;
     }
     if (scene.output.vtk_every > 0) {

@@ -15,8 +15,8 @@
 
 #include <memory>
 
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 

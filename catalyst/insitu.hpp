@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "coupling/voidage_grid.hpp"
+#include "analysis/voidage_grid.hpp"
 #include "dem/dem_particles.hpp"
-#include "run/scene.hpp"
+#include "scene/scene.hpp"
 #include "sph/fluid_particles.hpp"
 
 namespace sphdem {

@@ -1093,7 +1093,7 @@ class SandColumn:
     START_1M = {"time.end": "0.3", "output.log_interval": "0.002"}
     LOAD = ("fluid_load_base: the forces of the wall particles on the column (SPH pairs with the fluid, "
             "variational pairs with the spheres) less the clear column's weight, i.e. the base's mean excess "
-            "pore pressure as the wall feels it (run/pore_pressure.hpp)")
+            "pore pressure as the wall feels it (analysis/pore_pressure.hpp)")
     FIRST_LAYER = ("the first fluid layer's mean P − ρf g (H − z) (excess_pore_pressure_base) is a point reading "
                    "through the kernel sums, not a load: without the hydrostatic split (session 6) it read ~0.37 in "
                    "the 0.1 m column at rest, where the wall carries the grains in contacts (row 'momentum "

@@ -29,9 +29,9 @@ namespace sphdem {
 // P - P_h, the fluid gets -grad P_h / rho'_a and the spheres rho0 |g| V_j, analytically.
 // The kernel sums' errors (partition of unity, zeroth-order gradient) then multiply
 // P - P_h, not the absolute pressure: in a packed bed with disordered fluid particles
-// the base pressure keeps no static offset (reduced sand column: 0.013 rho g H at rest against 0.36).
-// Returns the vertical force the wall particles' pairs put on the spheres (N): a load
-// path to the wall that the fluid particles do not see (run/pore_pressure.hpp).
+// the base pressure keeps no static offset (reduced sand column: 0.013 rho g H at rest against
+// 0.36). Returns the vertical force the wall particles' pairs put on the spheres (N): a load path
+// to the wall that the fluid particles do not see (analysis/pore_pressure.hpp).
 double couple_pressure_variationally(FluidParticles& f, DemParticles& s, const FluidSpherePairs& pairs,
                                      const std::vector<std::uint32_t>& halo_source, PairAccumulator& scratch,
                                      const HydrostaticPressure& ph = {});

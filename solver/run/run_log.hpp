@@ -5,7 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "run/simulation.hpp"
+#include "analysis/diagnostics.hpp"
+#include "scene/scene.hpp"
 
 namespace sphdem {
 

@@ -7,9 +7,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "analysis/diagnostics.hpp"
+#include "analysis/sediment_output.hpp"
+#include "propagator/simulation.hpp"
 #include "run/run_log.hpp"
-#include "run/sediment_output.hpp"
-#include "run/simulation.hpp"
 
 namespace sphdem {
 
@@ -48,7 +49,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
          << std::flush;
   sim.relax();
   RunLog log((fs::path(opt.out_dir) / "log.csv").string(), scene.species);
-  log.write(sim.diagnostics());
+  log.write(diagnostics(sim));
   std::vector<double> next_hook(opt.hooks.size(), 0.0), last_run(opt.hooks.size(), -1.0);
   auto run_hooks = [&](bool last) {  // each hook at t = 0, every interval, and at the end
     for (std::size_t k = 0; k < opt.hooks.size(); ++k) {
@@ -77,7 +78,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
     const bool last = sim.time() >= end * (1.0 - 1e-12);
     if (sim.time() >= next_log * (1.0 - 1e-9) || last) {
-      log.write(sim.diagnostics());
+      log.write(diagnostics(sim));
       while (next_log <= sim.time() * (1.0 + 1e-9)) next_log += scene.output.log_interval;
     }
     run_hooks(last);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "run/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace sphdem {
 

@@ -115,7 +115,7 @@ def half_unit(x, digits):
 
 def lattice_sites(case):
     """Sites of every lattice group, by the rule of cases/README.md
-    (block_lattice in solver/run/initial_state.cpp): (total, [(n_x, n_y, n_z, a_z)])."""
+    (block_lattice in solver/scene/initial_state.cpp): (total, [(n_x, n_y, n_z, a_z)])."""
     size = [float(v) for v in case["domain"]["size"]]
     diam = {s["name"]: float(s["diameter"]) for s in case["species"]}
     total, groups = 0, []

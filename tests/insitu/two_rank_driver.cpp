@@ -28,11 +28,11 @@
 #include <type_traits>
 #include <vector>
 
-#include "coupling/voidage_grid.hpp"
+#include "analysis/voidage_grid.hpp"
 #include "dem/dem_particles.hpp"
 #include "domain/cell_list.hpp"
 #include "insitu.hpp"
-#include "run/scene.hpp"
+#include "scene/scene.hpp"
 #include "sph/fluid_particles.hpp"
 #include "sph/kernel.hpp"
 

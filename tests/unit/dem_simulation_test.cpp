@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 

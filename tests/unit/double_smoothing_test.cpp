@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <string>
 
-#include "run/initial_state.hpp"
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/initial_state.hpp"
+#include "scene/scene.hpp"
 #include "sph/kernel.hpp"
 
 using namespace sphdem;

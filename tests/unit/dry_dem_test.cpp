@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 

@@ -10,9 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "run/pore_pressure.hpp"
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "analysis/diagnostics.hpp"
+#include "analysis/pore_pressure.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 
@@ -54,7 +55,7 @@ TEST(Hydrostatic, ColumnAtRestKeepsPressureHeightAndDensity) {
     const double p = acc.first / acc.second, p_ref = rho_f * g * depth;
     worst = std::max(worst, std::abs(p / p_ref - 1.0));
   }
-  const Diagnostics d = sim.diagnostics();
+  const Diagnostics d = diagnostics(sim);
   std::printf("after %ld steps (%.3g s): worst layer pressure error %.3f %%, top moved %.3f %% of H, "
               "max |rho/rho_0 - 1| %.3f %%, max |u| %.3g m/s\n",
               sim.step_count(), sim.time(), 100 * worst, 100 * (top - top0) / H, 100 * d.max_density_error, vmax);
@@ -98,23 +99,23 @@ TEST(ExcessPorePressure, WaterAtRestHasNone) {
   const Scene sc = load_scene_text(kColumn, "column.yaml");
   Simulation sim(sc);
   // the hydrostatic start is P = rho_f g (H - z) exactly
-  EXPECT_LT(std::abs(sim.diagnostics().excess_pore_pressure_base), 1e-12);
+  EXPECT_LT(std::abs(diagnostics(sim).excess_pore_pressure_base), 1e-12);
   const double period = 4.0 * sc.fill_height() / sc.fluid.sound_speed;
   double worst = 0;
   while (sim.time() < 1.5 * period) {
     sim.step();
-    worst = std::max(worst, std::abs(sim.diagnostics().excess_pore_pressure_base));
+    worst = std::max(worst, std::abs(diagnostics(sim).excess_pore_pressure_base));
   }
   std::printf("water at rest over 1.5 acoustic periods: max |u_base| / (rho_f g H) = %.2e\n", worst);
   EXPECT_LT(worst, 0.01);  // physics.md §1: the column at rest keeps its pressure within 1 %
 }
 
-// The fluid's load on the wall (run/pore_pressure.hpp: fluid_load_base) with a rigid
+// The fluid's load on the wall (analysis/pore_pressure.hpp: fluid_load_base) with a rigid
 // layer of neutrally buoyant spheres (epsilon 0.9) near the wall, within reach of the
 // wall particles' kernel (it stays where it is, so no inertia enters the balance). At
 // rest the fluid carries its own weight and, by action-reaction, the buoyancy it gives
-// the spheres, rho_f g V: both are the clear column's load, so the excess is 0. With the variational
-// coupling part of the buoyancy comes from the wall particles' pairs straight onto the
+// the spheres, rho_f g V: both are the clear column's load, so the excess is 0. With the
+// variational coupling part of the buoyancy comes from the wall particles' pairs straight onto the
 // spheres (near the wall the pairs carry the absolute pressure: 3.1 times the buoyancy up
 // from the wall, 2.1 times down from the fluid above); the load must count that path.
 TEST(FluidLoadOnTheWall, NeutralLayerNearTheWallAddsNoExcess) {
@@ -145,7 +146,7 @@ particles: [{type: lattice, species: neutral, voidage: 0.9, min: [0, 0, 1.0e-4],
     double load = 0, without_wall_pairs = 0, dur = 0;
     while (sim.time() < t0 + period) {
       const double dt = sim.dt_sph();
-      load += sim.diagnostics().fluid_load_base * dt;
+      load += diagnostics(sim).fluid_load_base * dt;
       without_wall_pairs += fluid_load_base(f, s, 0.0, sim.hydrostatic_split(), area, base) * dt;
       dur += dt;
       sim.step();

@@ -7,6 +7,8 @@
 // independent placement, binomial with variance N p (1 - p). RSA's exclusion makes the
 // counts less variable than that (sub-Poissonian), so +-4 binomial standard deviations
 // is a conservative band (P(exceeded) < 1e-4 per part even for independent points).
+#include "scene/random_packing.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,9 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "run/initial_state.hpp"
-#include "run/random_packing.hpp"
-#include "run/scene.hpp"
+#include "scene/initial_state.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 

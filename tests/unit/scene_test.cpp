@@ -2,7 +2,7 @@
 // resolution of the automatic values, and the scene_to_yaml round trip (case.yaml).
 // Also keeps cases/README.md in step with the loader (every accepted key, every case,
 // every log.csv column is documented there).
-#include "run/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "run/initial_state.hpp"
 #include "run/run_log.hpp"
+#include "scene/initial_state.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphdem;

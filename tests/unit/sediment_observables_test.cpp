@@ -8,12 +8,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "run/bulk_density.hpp"
-#include "run/contact_network.hpp"
-#include "run/pore_pressure.hpp"
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
-#include "run/size_thirds.hpp"
+#include "analysis/bulk_density.hpp"
+#include "analysis/contact_network.hpp"
+#include "analysis/pore_pressure.hpp"
+#include "analysis/size_thirds.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 

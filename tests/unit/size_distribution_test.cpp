@@ -9,6 +9,8 @@
 // - variance: |s_N^2 - sigma^2| <= 5 sqrt((mu_4 - sigma^4) / N)    (5 standard errors)
 // - quantiles / whole CDF: sup_d |F_N(d) - F(d)| <= sqrt(ln(2/a) / (2N)) with a = 1e-6,
 //   the Dvoretzky-Kiefer-Wolfowitz bound (Massart's constant): P(exceeded) <= 1e-6.
+#include "scene/size_distribution.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,8 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "run/scene.hpp"
-#include "run/size_distribution.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 

@@ -4,15 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <variant>
 #include <cstdio>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "analysis/diagnostics.hpp"
 #include "closed_forms.hpp"
-#include "run/initial_state.hpp"
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/initial_state.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 
@@ -136,7 +137,7 @@ BlockRun run_block(const std::string& file, const std::vector<std::string>& over
   while (sim.time() < sc.time.end) {
     sim.step();
     if (sim.time() > t0) {
-      const auto d = sim.diagnostics();
+      const auto d = diagnostics(sim);
       sum += (w_big * d.slip_z_mean[0] + (1.0 - w_big) * d.slip_z_mean[1]) * sim.dt_sph();
       wsum += sim.dt_sph();
       means.add(s, sim.dt_sph());

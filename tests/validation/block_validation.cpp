@@ -4,10 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/diagnostics.hpp"
 #include "closed_forms.hpp"
-#include "run/initial_state.hpp"
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/initial_state.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 
@@ -27,7 +28,7 @@ TEST(MonodisperseBlock, MeanSlipMatchesDiFelice) {
   while (sim.time() < sc.time.end) {
     sim.step();
     if (sim.time() > t0) {
-      sum += sim.diagnostics().slip_z_mean[0] * sim.dt_sph();
+      sum += diagnostics(sim).slip_z_mean[0] * sim.dt_sph();
       wsum += sim.dt_sph();
     }
   }

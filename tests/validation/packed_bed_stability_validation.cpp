@@ -9,8 +9,9 @@
 #include <cstdio>
 #include <string>
 
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "analysis/diagnostics.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 
@@ -44,9 +45,9 @@ Energy run(const std::string& coupling) {
   Energy e;
   while (sim.time() < sc.time.end) {
     sim.step();
-    if (e.early == 0.0 && sim.time() >= 0.02) e.early = sim.diagnostics().kinetic_energy_fluid;
+    if (e.early == 0.0 && sim.time() >= 0.02) e.early = diagnostics(sim).kinetic_energy_fluid;
   }
-  e.end = sim.diagnostics().kinetic_energy_fluid;
+  e.end = diagnostics(sim).kinetic_energy_fluid;
   std::printf("%s: fluid kinetic energy %.3g J at 20 ms, %.3g J at %.3g s\n", coupling.c_str(), e.early, e.end,
               sim.time());
   return e;

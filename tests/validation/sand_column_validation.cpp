@@ -13,13 +13,15 @@
 #include <filesystem>
 #include <vector>
 
+#include "analysis/bulk_density.hpp"
+#include "analysis/diagnostics.hpp"
+#include "analysis/pore_pressure.hpp"
+#include "analysis/sediment_output.hpp"
+#include "analysis/size_thirds.hpp"
+#include "analysis/voidage_grid.hpp"
 #include "closed_forms.hpp"
-#include "run/bulk_density.hpp"
-#include "run/pore_pressure.hpp"
-#include "run/scene.hpp"
-#include "run/sediment_output.hpp"
-#include "run/simulation.hpp"
-#include "run/size_thirds.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 
@@ -109,7 +111,7 @@ class SandColumn : public ::testing::Test {
     sim.relax();
     while (sim.time() < sc.time.end) {
       r.base.t.push_back(sim.time());
-      const Diagnostics d = sim.diagnostics();
+      const Diagnostics d = diagnostics(sim);
       r.base.u.push_back(d.excess_pore_pressure_base);
       r.fluid_load.push_back(d.fluid_load_base);
       r.wall_load.push_back(d.wall_load_base);
@@ -136,8 +138,8 @@ class SandColumn : public ::testing::Test {
     r.rho_bed_solid = sc.fluid.density + (sand.density - sc.fluid.density) * solid / (area * r.z_top);
     const double h = sc.fluid.smoothing_factor * sc.fluid.spacing;
     const GridSpec grid = column_voidage_grid(sc.box.length(0), sc.box.length(1), sc.box.length(2), sc.fluid.spacing, h);
-    const BulkDensityProfile prof =
-        bulk_density_profile(sim.voidage_on_grid(grid, h), grid, sc.fluid.density, sand.density, H);
+    const BulkDensityProfile prof = bulk_density_profile(voidage_on_grid(sim, grid, h), grid,
+                                                         sc.fluid.density, sand.density, H);
     r.rho_profile_max = *std::max_element(prof.bulk_density.begin(), prof.bulk_density.end());
     r.steps = sim.step_count();
     {
@@ -155,7 +157,7 @@ class SandColumn : public ::testing::Test {
       for (std::size_t i = 0; i < s.n_owned; ++i) pz += s.volume(i) * s.gz[i];
       r.pressure_over_buoyancy = pz / (solid * sc.fluid.density * std::abs(sc.gravity[2]));
       const BasePorePressure b{sc.fluid.density, std::abs(sc.gravity[2]), H, sc.fluid.spacing};
-      r.wall_pairs_load = sim.diagnostics().fluid_load_base -
+      r.wall_pairs_load = diagnostics(sim).fluid_load_base -
                           fluid_load_base(sim.fluid(), s, 0.0, sim.hydrostatic_split(), area, b);
     }
 

@@ -5,9 +5,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/diagnostics.hpp"
 #include "closed_forms.hpp"
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 
@@ -21,12 +22,12 @@ TEST(SingleSphere, FollowsStokesTransientAndTerminalSpeed) {
   double max_transient_err = 0.0;
   while (sim.time() < sc.time.end) {
     sim.step();
-    const Diagnostics d = sim.diagnostics();
+    const Diagnostics d = diagnostics(sim);
     const double v = -d.vz_mean[0];
     const double err = std::abs(v - stokes.speed(d.time)) / stokes.v_terminal;
     if (d.time <= 3.0 * stokes.t_relax) max_transient_err = std::max(max_transient_err, err);
   }
-  const Diagnostics d = sim.diagnostics();
+  const Diagnostics d = diagnostics(sim);
   const double v_end = -d.vz_mean[0], slip_end = d.slip_z_mean[0];
   std::printf("t_d = %.4g s, v_T = %.5g m/s; at t = %.4g s (%.1f t_d): v = %.5g m/s (%+.2f %%), "
               "slip = %.5g m/s (%+.2f %%); max transient error (t <= 3 t_d) %.2f %% of v_T\n",

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <string>
 
-#include "run/scene.hpp"
-#include "run/simulation.hpp"
+#include "propagator/simulation.hpp"
+#include "scene/scene.hpp"
 
 using namespace sphdem;
 

@@ -1,6 +1,6 @@
 #pragma once
 #include "dem/dem_particles.hpp"
-#include "run/scene.hpp"
+#include "scene/scene.hpp"
 #include "sph/fluid_particles.hpp"
 
 namespace sphdem {

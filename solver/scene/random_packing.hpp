@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "dem/dem_particles.hpp"
-#include "run/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace sphdem {
 

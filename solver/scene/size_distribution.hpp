@@ -19,14 +19,14 @@ enum class SizeLaw { kSingle, kList, kUniform, kNormal, kLognormal };
 
 struct SizeDistribution {
   SizeLaw law = SizeLaw::kSingle;
-  std::vector<double> diameters;    // list: class diameters (m)
-  std::vector<double> fractions;    // list: fractions as given (they sum to 1)
-  bool by_volume = false;           // list: `fractions` are volume fractions (else number)
-  double mean = 0.0, std = 0.0;     // normal: of d (m), before truncation
+  std::vector<double> diameters;        // list: class diameters (m)
+  std::vector<double> fractions;        // list: fractions as given (they sum to 1)
+  bool by_volume = false;               // list: `fractions` are volume fractions (else number)
+  double mean = 0.0, std = 0.0;         // normal: of d (m), before truncation
   double median = 0.0, sigma_ln = 0.0;  // lognormal: ln d ~ N(ln median, sigma_ln^2)
-  double min = 0.0, max = 0.0;      // support: uniform bounds, truncation of normal and
-                                    // lognormal, smallest and largest list class, or the
-                                    // diameter of a single-size species
+  double min = 0.0, max = 0.0;          // support: uniform bounds, truncation of normal and
+                                        // lognormal, smallest and largest list class, or the
+                                        // diameter of a single-size species
 };
 
 const char* size_law_name(SizeLaw law);  // "single", "list", "uniform", "normal", "lognormal"
@@ -42,7 +42,9 @@ double size_moment(const SizeDistribution& law, int k);
 // Share of the untruncated normal or lognormal law that lies in [min, max] (1 otherwise).
 double truncation_mass(const SizeDistribution& law);
 // Sauter mean d32 = E[D^3] / E[D^2].
-inline double sauter_mean(const SizeDistribution& law) { return size_moment(law, 3) / size_moment(law, 2); }
+inline double sauter_mean(const SizeDistribution& law) {
+  return size_moment(law, 3) / size_moment(law, 2);
+}
 
 // Standard normal CDF Phi and its inverse (Acklam's rational start, one Halley step:
 // relative error near 1e-15).
@@ -50,7 +52,9 @@ double normal_cdf(double x);
 double normal_quantile(double p);
 
 // A uniform double in [0, 1) from the top 53 bits of one draw.
-inline double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+inline double uniform01(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 // Deals items among classes in proportion to `shares` (summing to 1): each call returns
 // the class furthest behind its quota, share_i (k + 1) - count_i, lowest index on ties.

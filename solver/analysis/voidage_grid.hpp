@@ -12,10 +12,12 @@
 
 namespace sphdem {
 
+class Simulation;
+
 struct GridSpec {
-  std::array<double, 3> origin{0, 0, 0};   // position of node (0,0,0)
+  std::array<double, 3> origin{0, 0, 0};            // position of node (0,0,0)
   std::array<double, 3> spacing{1e-4, 1e-4, 1e-4};  // node spacing per axis
-  std::array<int, 6> extent{0, 0, 0, 0, 0, 0};  // node index range [i0,i1] x [j0,j1] x [k0,k1]
+  std::array<int, 6> extent{0, 0, 0, 0, 0, 0};      // node index range [i0,i1] x [j0,j1] x [k0,k1]
   std::size_t count() const {
     return static_cast<std::size_t>(extent[1] - extent[0] + 1) * (extent[3] - extent[2] + 1) *
            (extent[5] - extent[4] + 1);
@@ -27,7 +29,11 @@ struct GridSpec {
 GridSpec column_voidage_grid(double lx, double ly, double top, double spacing, double h);
 
 // Values in VTK order (x fastest), for the nodes of spec.extent.
-std::vector<double> compute_voidage_grid(const DemParticles& s, const CellList& cells, const GridSpec& spec,
-                                         double h);
+std::vector<double> compute_voidage_grid(const DemParticles& s, const CellList& cells,
+                                         const GridSpec& spec, double h);
+
+// The same from a run's spheres, binned afresh (they have moved since the step's list
+// build); throws if the kernel's support exceeds the sphere halo.
+std::vector<double> voidage_on_grid(const Simulation& sim, const GridSpec& spec, double h);
 
 }  // namespace sphdem

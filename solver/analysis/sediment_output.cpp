@@ -1,13 +1,14 @@
-#include "run/sediment_output.hpp"
+#include "analysis/sediment_output.hpp"
 
 #include <algorithm>
 #include <filesystem>
 #include <limits>
 
-#include "run/bulk_density.hpp"
-#include "run/contact_network.hpp"
-#include "run/simulation.hpp"
-#include "run/size_thirds.hpp"
+#include "analysis/bulk_density.hpp"
+#include "analysis/contact_network.hpp"
+#include "analysis/size_thirds.hpp"
+#include "analysis/voidage_grid.hpp"
+#include "propagator/simulation.hpp"
 
 namespace sphdem {
 
@@ -18,16 +19,19 @@ void write_sediment_output(const Simulation& sim, const std::string& out_dir) {
   if (s.n_owned == 0 || sc.species.empty()) return;
   const fs::path dir(out_dir);
 
-  const bool one_density = std::all_of(sc.species.begin(), sc.species.end(),
-                                       [&](const SpeciesSpec& sp) { return sp.density == sc.species[0].density; });
+  const bool one_density =
+      std::all_of(sc.species.begin(), sc.species.end(),
+                  [&](const SpeciesSpec& sp) { return sp.density == sc.species[0].density; });
   // The voidage grid needs the sphere halo at the fluid's kernel reach: without fluid
   // (dry DEM) the halo only spans the contacts, and there is no voidage field to report.
   if (one_density && sc.fluid.enabled) {
     const double h = sc.fluid.smoothing_factor * sc.fluid.spacing;
-    const GridSpec grid = column_voidage_grid(sc.box.length(0), sc.box.length(1), sc.box.length(2), sc.fluid.spacing, h);
-    write_bulk_density_csv(bulk_density_profile(sim.voidage_on_grid(grid, h), grid, sc.fluid.density,
-                                                sc.species[0].density, sc.fill_height()),
-                           (dir / "bulk_density.csv").string());
+    const GridSpec grid = column_voidage_grid(sc.box.length(0), sc.box.length(1), sc.box.length(2),
+                                              sc.fluid.spacing, h);
+    write_bulk_density_csv(
+        bulk_density_profile(voidage_on_grid(sim, grid, h), grid, sc.fluid.density,
+                             sc.species[0].density, sc.fill_height()),
+        (dir / "bulk_density.csv").string());
   }
   double d_lo = std::numeric_limits<double>::infinity(), d_hi = 0;
   for (const auto& sp : sc.species) {

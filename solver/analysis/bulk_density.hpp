@@ -1,7 +1,7 @@
 #pragma once
 // Bulk density profile of the mixture (Zhao, Houlsby & Utili 2014, eq. 14, Fig. 8):
 //   rho_bulk(z) = eps(z) rho_f + (1 - eps(z)) rho_s,
-// eps(z) the voidage on the analysis grid (coupling/voidage_grid.hpp: eq. 2.50 with the
+// eps(z) the voidage on the analysis grid (analysis/voidage_grid.hpp: eq. 2.50 with the
 // solver's kernel) averaged over the nodes of each horizontal layer. Within one kernel
 // support 2h of the wall the kernel reaches below z = 0 where there are no spheres, so
 // eps is over-estimated there and rho_bulk under-estimated (the solver's own voidage
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/voidage_grid.hpp"
+#include "analysis/voidage_grid.hpp"
 
 namespace sphdem {
 
@@ -20,8 +20,8 @@ struct BulkDensityProfile {
 };
 
 // Layers of `grid` with 0 <= z <= z_top; `voidage` in the grid's VTK order (x fastest).
-BulkDensityProfile bulk_density_profile(const std::vector<double>& voidage, const GridSpec& grid, double rho_f,
-                                        double rho_s, double z_top);
+BulkDensityProfile bulk_density_profile(const std::vector<double>& voidage, const GridSpec& grid,
+                                        double rho_f, double rho_s, double z_top);
 
 // CSV: z,voidage,bulk_density.
 void write_bulk_density_csv(const BulkDensityProfile& p, const std::string& path);

@@ -1,4 +1,4 @@
-#include "run/pore_pressure.hpp"
+#include "analysis/pore_pressure.hpp"
 
 #include <limits>
 

@@ -1,4 +1,4 @@
-#include "run/size_thirds.hpp"
+#include "analysis/size_thirds.hpp"
 
 #include <fmt/format.h>
 
@@ -19,7 +19,8 @@ double number_percentile(const std::vector<double>& sorted, double p) {
 }
 
 SizeThirds size_thirds(const DemParticles& s, double d_lo, double d_hi, int n_bins) {
-  if (n_bins < 1 || !(d_hi > d_lo)) throw std::invalid_argument("size_thirds: need n_bins >= 1 and d_hi > d_lo");
+  if (n_bins < 1 || !(d_hi > d_lo))
+    throw std::invalid_argument("size_thirds: need n_bins >= 1 and d_hi > d_lo");
   SizeThirds out;
   for (int b = 0; b <= n_bins; ++b) out.bin_edges.push_back(d_lo + (d_hi - d_lo) * b / n_bins);
   const std::size_t n = s.n_owned;
@@ -72,8 +73,8 @@ void write_size_thirds_csv(const SizeThirds& t, const std::string& path) {
   const char* names[3] = {"bottom", "middle", "top"};
   for (int k = 0; k < 3; ++k) {
     const SizeThird& th = t.third[k];
-    out << fmt::format("{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}", names[k], th.count, th.z_min, th.z_max,
-                       th.mean_d, th.d10, th.d50, th.d90);
+    out << fmt::format("{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}", names[k], th.count,
+                       th.z_min, th.z_max, th.mean_d, th.d10, th.d50, th.d90);
     for (std::size_t c : th.bin_count) out << ',' << c;
     out << '\n';
   }

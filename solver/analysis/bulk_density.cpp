@@ -1,4 +1,4 @@
-#include "run/bulk_density.hpp"
+#include "analysis/bulk_density.hpp"
 
 #include <fmt/format.h>
 
@@ -7,10 +7,11 @@
 
 namespace sphdem {
 
-BulkDensityProfile bulk_density_profile(const std::vector<double>& voidage, const GridSpec& g, double rho_f,
-                                        double rho_s, double z_top) {
+BulkDensityProfile bulk_density_profile(const std::vector<double>& voidage, const GridSpec& g,
+                                        double rho_f, double rho_s, double z_top) {
   const std::size_t nx = g.extent[1] - g.extent[0] + 1, ny = g.extent[3] - g.extent[2] + 1;
-  if (voidage.size() != g.count()) throw std::invalid_argument("bulk_density_profile: voidage does not match the grid");
+  if (voidage.size() != g.count())
+    throw std::invalid_argument("bulk_density_profile: voidage does not match the grid");
   BulkDensityProfile p;
   std::size_t layer = 0;
   for (int k = g.extent[4]; k <= g.extent[5]; ++k, ++layer) {

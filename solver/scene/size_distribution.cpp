@@ -1,4 +1,4 @@
-#include "run/size_distribution.hpp"
+#include "scene/size_distribution.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,9 @@ namespace {
 constexpr double kSqrt2 = 1.41421356237309504880;
 constexpr double kSqrt2Pi = 2.50662827463100050242;
 
-double normal_pdf(double x) { return std::exp(-0.5 * x * x) / kSqrt2Pi; }
+double normal_pdf(double x) {
+  return std::exp(-0.5 * x * x) / kSqrt2Pi;
+}
 
 // P(a <= Z <= b) for a standard normal Z, from the tail on the side of [a, b] so that
 // an interval far in a tail keeps its digits.
@@ -35,7 +37,8 @@ struct Standardised {
   double a, b, mu, sigma;
 };
 Standardised standardised(const SizeDistribution& L) {
-  if (L.law == SizeLaw::kNormal) return {(L.min - L.mean) / L.std, (L.max - L.mean) / L.std, L.mean, L.std};
+  if (L.law == SizeLaw::kNormal)
+    return {(L.min - L.mean) / L.std, (L.max - L.mean) / L.std, L.mean, L.std};
   const double mu = std::log(L.median);
   return {(std::log(L.min) - mu) / L.sigma_ln, (std::log(L.max) - mu) / L.sigma_ln, mu, L.sigma_ln};
 }
@@ -52,25 +55,32 @@ std::vector<std::size_t> by_diameter(const SizeDistribution& L) {
 
 const char* size_law_name(SizeLaw law) {
   switch (law) {
-    case SizeLaw::kSingle: return "single";
-    case SizeLaw::kList: return "list";
-    case SizeLaw::kUniform: return "uniform";
-    case SizeLaw::kNormal: return "normal";
-    case SizeLaw::kLognormal: return "lognormal";
+    case SizeLaw::kSingle:
+      return "single";
+    case SizeLaw::kList:
+      return "list";
+    case SizeLaw::kUniform:
+      return "uniform";
+    case SizeLaw::kNormal:
+      return "normal";
+    case SizeLaw::kLognormal:
+      return "lognormal";
   }
   return "?";
 }
 
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / kSqrt2); }
+double normal_cdf(double x) {
+  return 0.5 * std::erfc(-x / kSqrt2);
+}
 
 double normal_quantile(double p) {
   if (p <= 0) return -std::numeric_limits<double>::infinity();
   if (p >= 1) return std::numeric_limits<double>::infinity();
   // P. J. Acklam's rational approximation (relative error 1.15e-9) ...
-  static const double a[] = {-3.969683028665376e+01, 2.209460984245205e+02, -2.759285104469687e+02,
+  static const double a[] = {-3.969683028665376e+01, 2.209460984245205e+02,  -2.759285104469687e+02,
                              1.383577518672690e+02,  -3.066479806614716e+01, 2.506628277459239e+00};
   static const double b[] = {-5.447609879822406e+01, 1.615858368580409e+02, -1.556989798598866e+02,
-                             6.680131188771972e+01,  -1.328068155288572e+01};
+                             6.680131188771972e+01, -1.328068155288572e+01};
   static const double c[] = {-7.784894002430293e-03, -3.223964580411365e-01, -2.400758277161838e+00,
                              -2.549732539343734e+00, 4.374664141464968e+00,  2.938163982698783e+00};
   static const double d[] = {7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00,
@@ -99,7 +109,8 @@ double normal_quantile(double p) {
 std::vector<double> number_fractions(const SizeDistribution& L) {
   std::vector<double> n = L.fractions;
   if (L.by_volume)
-    for (std::size_t i = 0; i < n.size(); ++i) n[i] /= L.diameters[i] * L.diameters[i] * L.diameters[i];
+    for (std::size_t i = 0; i < n.size(); ++i)
+      n[i] /= L.diameters[i] * L.diameters[i] * L.diameters[i];
   const double sum = std::accumulate(n.begin(), n.end(), 0.0);
   for (double& v : n) v /= sum;
   return n;
@@ -115,8 +126,10 @@ double size_cdf(const SizeDistribution& L, double d) {
   if (d < L.min) return 0.0;
   if (d >= L.max) return 1.0;
   switch (L.law) {
-    case SizeLaw::kSingle: return 1.0;
-    case SizeLaw::kUniform: return (d - L.min) / (L.max - L.min);
+    case SizeLaw::kSingle:
+      return 1.0;
+    case SizeLaw::kUniform:
+      return (d - L.min) / (L.max - L.min);
     case SizeLaw::kList: {
       const std::vector<double> n = number_fractions(L);
       double F = 0.0;
@@ -136,8 +149,10 @@ double size_cdf(const SizeDistribution& L, double d) {
 
 double size_quantile(const SizeDistribution& L, double u) {
   switch (L.law) {
-    case SizeLaw::kSingle: return L.min;
-    case SizeLaw::kUniform: return std::clamp(L.min + u * (L.max - L.min), L.min, L.max);
+    case SizeLaw::kSingle:
+      return L.min;
+    case SizeLaw::kUniform:
+      return std::clamp(L.min + u * (L.max - L.min), L.min, L.max);
     case SizeLaw::kList: {
       const std::vector<double> n = number_fractions(L);
       double F = 0.0;
@@ -160,7 +175,8 @@ double size_quantile(const SizeDistribution& L, double u) {
 
 double size_moment(const SizeDistribution& L, int k) {
   switch (L.law) {
-    case SizeLaw::kSingle: return std::pow(L.min, k);
+    case SizeLaw::kSingle:
+      return std::pow(L.min, k);
     case SizeLaw::kUniform:
       return (std::pow(L.max, k + 1) - std::pow(L.min, k + 1)) / ((k + 1) * (L.max - L.min));
     case SizeLaw::kList: {
@@ -178,8 +194,9 @@ double size_moment(const SizeDistribution& L, int k) {
       std::vector<double> M(k + 1, 0.0);
       M[0] = 1.0;
       for (int j = 1; j <= k; ++j)
-        M[j] = (j >= 2 ? (j - 1) * M[j - 2] : 0.0) +
-               (std::pow(s.a, j - 1) * normal_pdf(s.a) - std::pow(s.b, j - 1) * normal_pdf(s.b)) / Z;
+        M[j] =
+            (j >= 2 ? (j - 1) * M[j - 2] : 0.0) +
+            (std::pow(s.a, j - 1) * normal_pdf(s.a) - std::pow(s.b, j - 1) * normal_pdf(s.b)) / Z;
       double m = 0.0, binom = 1.0;
       for (int j = 0; j <= k; ++j) {
         m += binom * std::pow(L.mean, k - j) * std::pow(L.std, j) * M[j];
@@ -205,7 +222,8 @@ std::size_t QuotaDealer::next() {
   std::size_t best = 0;
   double behind = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < shares_.size(); ++i) {
-    const double deficit = shares_[i] * static_cast<double>(dealt_ + 1) - static_cast<double>(count_[i]);
+    const double deficit =
+        shares_[i] * static_cast<double>(dealt_ + 1) - static_cast<double>(count_[i]);
     if (deficit > behind) {
       behind = deficit;
       best = i;
@@ -217,13 +235,17 @@ std::size_t QuotaDealer::next() {
 }
 
 SizeSampler::SizeSampler(const SizeDistribution& law)
-    : law_(law), classes_(law.law == SizeLaw::kList ? number_fractions(law) : std::vector<double>{1.0}) {}
+    : law_(law),
+      classes_(law.law == SizeLaw::kList ? number_fractions(law) : std::vector<double>{1.0}) {}
 
 double SizeSampler::next(std::mt19937_64& rng) {
   switch (law_.law) {
-    case SizeLaw::kSingle: return law_.min;
-    case SizeLaw::kList: return law_.diameters[classes_.next()];
-    default: return size_quantile(law_, uniform01(rng));
+    case SizeLaw::kSingle:
+      return law_.min;
+    case SizeLaw::kList:
+      return law_.diameters[classes_.next()];
+    default:
+      return size_quantile(law_, uniform01(rng));
   }
 }
 

@@ -22,9 +22,9 @@ namespace sphdem {
 struct ContactNetwork {
   std::vector<std::int64_t> id_a, id_b;  // sphere ids; id_b = -1: the bottom wall
   std::vector<double> xa, ya, za;        // centre of a (m)
-  std::vector<double> xb, yb, zb;        // centre of b as the contact sees it, or the wall point (m)
-  std::vector<double> overlap;           // delta (m)
-  std::vector<double> normal_force;      // |F_n| (N)
+  std::vector<double> xb, yb, zb;    // centre of b as the contact sees it, or the wall point (m)
+  std::vector<double> overlap;       // delta (m)
+  std::vector<double> normal_force;  // |F_n| (N)
   std::size_t size() const { return id_a.size(); }
 };
 
@@ -32,6 +32,10 @@ struct ContactNetwork {
 // contact neighbour list of the last build (it holds every pair within the skin).
 ContactNetwork contact_network(const DemParticles& s, const ContactNeighbourList& list,
                                const LinearSpringDashpot& law, double wall_z = 0.0);
+
+// Number of touching neighbours (spheres and the bottom wall at z = 0) of each owned sphere,
+// from the contact list (every pair within its skin).
+std::vector<int> contact_counts(const DemParticles& s, const ContactNeighbourList& list);
 
 // CSV: id_a,id_b,xa,ya,za,xb,yb,zb,overlap,normal_force (SI units, 17 digits).
 void write_contact_network_csv(const ContactNetwork& net, const std::string& path);

@@ -12,18 +12,18 @@
 #include "dem/rolling_model.hpp"
 #include "dem/tangential_model.hpp"
 #include "domain/box.hpp"
-#include "run/size_distribution.hpp"
+#include "scene/size_distribution.hpp"
 
 namespace sphdem {
 
 struct FluidSpec {
-  double density = 1000.0;     // rho_f (kg/m^3)
-  double viscosity = 8.9e-4;   // mu (Pa s)
-  double spacing = 2.0e-4;     // initial lattice spacing dx (m)
-  double smoothing_factor = 1.5;  // sigma in h = sigma (m/rho)^(1/3), eq. 2.65
-  double fill_height = 0.0;    // free-surface height (m); 0 = the box height
-  double expected_speed = 0.0; // u_m (m/s) for B, eq. 2.64; 0 = largest Stokes speed
-  double sound_speed = 0.0;    // c0 (m/s); 0 = 10 max(u_m, sqrt(2 g H)) (physics.md §1)
+  double density = 1000.0;         // rho_f (kg/m^3)
+  double viscosity = 8.9e-4;       // mu (Pa s)
+  double spacing = 2.0e-4;         // initial lattice spacing dx (m)
+  double smoothing_factor = 1.5;   // sigma in h = sigma (m/rho)^(1/3), eq. 2.65
+  double fill_height = 0.0;        // free-surface height (m); 0 = the box height
+  double expected_speed = 0.0;     // u_m (m/s) for B, eq. 2.64; 0 = largest Stokes speed
+  double sound_speed = 0.0;        // c0 (m/s); 0 = 10 max(u_m, sqrt(2 g H)) (physics.md §1)
   double alpha_artificial = 0.02;  // Monaghan alpha on approaching pairs only
   int gamma = 7;
   int wall_layers = 3;
@@ -47,38 +47,38 @@ struct SpeciesSpec {
 struct ParticleGroupSpec {
   enum class Kind { kSingle, kLattice, kRandom };
   Kind kind = Kind::kSingle;
-  std::string species;                      // the species (random: the first of `mixture`)
-  std::array<double, 3> position{0, 0, 0};  // single: centre
+  std::string species;                             // the species (random: the first of `mixture`)
+  std::array<double, 3> position{0, 0, 0};         // single: centre
   std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};  // lattice, random: region
-  double voidage = 0.9;                     // lattice, random: target voidage of the region
+  double voidage = 0.9;                            // lattice, random: target voidage of the region
   bool fcc = false;  // lattice: face-centred cubic (4 sites a cell, in (100) layers a/2 apart),
                      // else simple cubic
-  std::vector<std::string> mixture;         // random: species names (one or more)
-  std::vector<double> fractions;            // random: number fractions of `mixture` (sum 1)
-  std::int64_t seed = 0;                    // random: seed of the positions and diameters
+  std::vector<std::string> mixture;  // random: species names (one or more)
+  std::vector<double> fractions;     // random: number fractions of `mixture` (sum 1)
+  std::int64_t seed = 0;             // random: seed of the positions and diameters
   std::array<double, 3> velocity{0, 0, 0};
-  double velocity_jitter = 0.0;   // each component + uniform in [-jitter, jitter] (m/s)
+  double velocity_jitter = 0.0;    // each component + uniform in [-jitter, jitter] (m/s)
   std::int64_t velocity_seed = 1;  // seed of the jitter
-  bool rigid = false;  // constant-porosity block: moves rigidly (thesis §4.5)
+  bool rigid = false;              // constant-porosity block: moves rigidly (thesis §4.5)
 };
 
 struct ContactSpec {
   LinearSpringDashpot normal{10.0, 0.0, -1.0, false};
   TangentialParams tangential;  // model none unless the scene turns friction on
   RollingParams rolling;        // model none unless the scene turns rolling resistance on
-  double skin = 0.3;  // Verlet skin as a fraction of the largest diameter
+  double skin = 0.3;            // Verlet skin as a fraction of the largest diameter
 };
 
 struct TimeSpec {
-  double end = 0.02;               // simulated time after release (s)
-  double cfl = 0.25;               // dt_SPH <= cfl h / v_sig (eq. 3.5 with support 2h)
+  double end = 0.02;                  // simulated time after release (s)
+  double cfl = 0.25;                  // dt_SPH <= cfl h / v_sig (eq. 3.5 with support 2h)
   double dem_steps_per_contact = 20;  // dt_DEM <= t_c / this (eq. 3.7)
-  double max_dt_sph = 1e-3;        // upper cap (s)
+  double max_dt_sph = 1e-3;           // upper cap (s)
 };
 
 struct StartupSpec {
-  int relax_steps = 200;     // fluid-only steps with spheres held, before t = 0
-  double damping = 0.02;     // fraction of fluid velocity removed per relaxation step
+  int relax_steps = 200;  // fluid-only steps with spheres held, before t = 0
+  double damping = 0.02;  // fraction of fluid velocity removed per relaxation step
 };
 
 struct OutputSpec {
@@ -91,9 +91,10 @@ struct OutputSpec {
 struct InSituSpec {
   double every = 0.0;  // (s) between analyses; 0 = end / 50
   std::vector<std::string> pipelines{"voidage_height", "interfaces", "com_tracks", "snapshots"};
-  int snapshot_every = 5;            // analyses between PNG snapshots
-  double grid_spacing = 0.0;         // voidage grid spacing (m); 0 = fluid.spacing
-  double reference_velocity = -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the first block or suspension
+  int snapshot_every = 5;     // analyses between PNG snapshots
+  double grid_spacing = 0.0;  // voidage grid spacing (m); 0 = fluid.spacing
+  double reference_velocity =
+      -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the first block or suspension
   bool enabled = true;
 };
 

@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "coupling/hindered_settling.hpp"
-#include "run/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace sphdem {
 
@@ -71,13 +71,13 @@ class MapReader {
     check_range(key(k), v, lo, hi, lo_open, hi_open);
     return v;
   }
-  void check_range(const std::string& full_key, double v, double lo, double hi, bool lo_open = false,
-                   bool hi_open = false) const {
+  void check_range(const std::string& full_key, double v, double lo, double hi,
+                   bool lo_open = false, bool hi_open = false) const {
     if (!std::isfinite(v)) fail(full_key, fmt::format("must be a finite number (got {})", v));
     const bool bad = (lo_open ? v <= lo : v < lo) || (hi_open ? v >= hi : v > hi);
     if (bad)
-      fail(full_key, fmt::format("must be in {}{}, {}{} (got {})", lo_open ? "(" : "[", lo,
-                                 hi, hi_open ? ")" : "]", v));
+      fail(full_key, fmt::format("must be in {}{}, {}{} (got {})", lo_open ? "(" : "[", lo, hi,
+                                 hi_open ? ")" : "]", v));
   }
   // A non-empty list of numbers, each in [lo, hi] (open ends as for number()); an entry
   // in error is named by its index, 'key.i'.
@@ -100,25 +100,31 @@ class MapReader {
   std::int64_t whole64(const std::string& k, std::int64_t def, std::int64_t lo, std::int64_t hi) {
     std::int64_t v = def;
     if (has(k)) v = scalar<std::int64_t>(k, "a whole number");
-    if (v < lo || v > hi) fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
+    if (v < lo || v > hi)
+      fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
     return v;
   }
   // A number the file must give (no default).
   double required(const std::string& k, double lo, double hi, bool lo_open = false) {
-    if (!has(k)) fail(key(k), fmt::format("is required: a number in {}{}, {}]", lo_open ? "(" : "[", lo, hi));
+    if (!has(k))
+      fail(key(k), fmt::format("is required: a number in {}{}, {}]", lo_open ? "(" : "[", lo, hi));
     return number(k, 0.0, lo, hi, lo_open);
   }
   int integer(const std::string& k, int def, int lo, int hi) {
     int v = def;
     if (has(k)) v = scalar<int>(k, "a whole number");
-    if (v < lo || v > hi) fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
+    if (v < lo || v > hi)
+      fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
     return v;
   }
-  bool boolean(const std::string& k, bool def) { return has(k) ? scalar<bool>(k, "true or false") : def; }
+  bool boolean(const std::string& k, bool def) {
+    return has(k) ? scalar<bool>(k, "true or false") : def;
+  }
   std::string text(const std::string& k, const std::string& def) {
     return has(k) ? scalar<std::string>(k, "a string") : def;
   }
-  std::string choice(const std::string& k, const std::string& def, const std::vector<std::string>& allowed) {
+  std::string choice(const std::string& k, const std::string& def,
+                     const std::vector<std::string>& allowed) {
     const std::string v = text(k, def);
     if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
       fail(key(k), fmt::format("must be one of: {} (got '{}')", fmt::join(allowed, ", "), v));
@@ -175,7 +181,8 @@ void apply_override(YAML::Node root, const std::string& assignment, const std::s
   try {
     value = YAML::Load(assignment.substr(eq + 1));
   } catch (const YAML::Exception& e) {
-    throw SceneError(fmt::format("{}: --set '{}': value is not valid YAML ({})", file, assignment, e.what()));
+    throw SceneError(
+        fmt::format("{}: --set '{}': value is not valid YAML ({})", file, assignment, e.what()));
   }
   std::vector<std::string> parts;
   std::stringstream ss(path);
@@ -184,8 +191,8 @@ void apply_override(YAML::Node root, const std::string& assignment, const std::s
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const bool last = k + 1 == parts.size();
     if (node.IsScalar())
-      throw SceneError(fmt::format("{}: --set '{}': '{}' holds a value, not a map of keys", file, assignment,
-                                   fmt::join(parts.begin(), parts.begin() + k, ".")));
+      throw SceneError(fmt::format("{}: --set '{}': '{}' holds a value, not a map of keys", file,
+                                   assignment, fmt::join(parts.begin(), parts.begin() + k, ".")));
     if (node.IsSequence()) {
       std::size_t idx = 0;
       try {
@@ -196,10 +203,13 @@ void apply_override(YAML::Node root, const std::string& assignment, const std::s
       if (idx >= node.size())
         throw SceneError(fmt::format("{}: --set '{}': '{}' must be an index in [0, {})", file,
                                      assignment, parts[k], node.size()));
-      if (last) node[idx] = value;
-      else node.reset(node[idx]);
+      if (last)
+        node[idx] = value;
+      else
+        node.reset(node[idx]);
     } else {
-      if (last) node[parts[k]] = value;
+      if (last)
+        node[parts[k]] = value;
       else {
         if (!node[parts[k]]) node[parts[k]] = YAML::Node(YAML::NodeType::Map);
         node.reset(node[parts[k]]);
@@ -229,27 +239,32 @@ void read_mixture(MapReader& r, const Scene& sc, ParticleGroupSpec& g) {
     g.mixture = {n.Scalar()};
   } else if (n.IsSequence() && n.size() > 0) {
     for (std::size_t i = 0; i < n.size(); ++i) {
-      if (!n[i].IsScalar()) r.fail(fmt::format("{}.{}", r.key("species"), i), "must be a species name");
+      if (!n[i].IsScalar())
+        r.fail(fmt::format("{}.{}", r.key("species"), i), "must be a species name");
       g.mixture.push_back(n[i].Scalar());
     }
   } else {
     r.fail(r.key("species"), "must be a species name or a non-empty list of names");
   }
   for (std::size_t i = 0; i < g.mixture.size(); ++i) {
-    const std::string k = n.IsScalar() ? r.key("species") : fmt::format("{}.{}", r.key("species"), i);
+    const std::string k =
+        n.IsScalar() ? r.key("species") : fmt::format("{}.{}", r.key("species"), i);
     if (sc.species_index(g.mixture[i]) < 0)
       r.fail(k, fmt::format("'{}' is not a species listed under 'species'", g.mixture[i]));
     for (std::size_t j = 0; j < i; ++j)
-      if (g.mixture[j] == g.mixture[i]) r.fail(k, fmt::format("'{}' is listed twice", g.mixture[i]));
+      if (g.mixture[j] == g.mixture[i])
+        r.fail(k, fmt::format("'{}' is listed twice", g.mixture[i]));
   }
   g.species = g.mixture.front();
   if (g.mixture.size() > 1 && !r.has("fractions"))
-    r.fail(r.key("fractions"), "is required with a list of species: one number fraction per species, summing to 1");
+    r.fail(r.key("fractions"),
+           "is required with a list of species: one number fraction per species, summing to 1");
   if (r.has("fractions")) {
     g.fractions = r.numbers("fractions", 0.0, 1.0, true);
     if (g.fractions.size() != g.mixture.size())
-      r.fail(r.key("fractions"), fmt::format("must have one entry per species ({} species, {} fractions)",
-                                             g.mixture.size(), g.fractions.size()));
+      r.fail(r.key("fractions"),
+             fmt::format("must have one entry per species ({} species, {} fractions)",
+                         g.mixture.size(), g.fractions.size()));
     check_sum_to_one(r, "fractions", g.fractions);
   }
   if (g.mixture.size() == 1) g.fractions = {1.0};  // what case.yaml implies when it writes one name
@@ -257,7 +272,8 @@ void read_mixture(MapReader& r, const Scene& sc, ParticleGroupSpec& g) {
 
 // species.N.size_distribution: one of the laws of size_distribution.hpp. Only the keys
 // of the chosen law are allowed.
-SizeDistribution read_size_distribution(const YAML::Node& node, const std::string& path, const std::string& file) {
+SizeDistribution read_size_distribution(const YAML::Node& node, const std::string& path,
+                                        const std::string& file) {
   MapReader r(node, path, file);
   SizeDistribution L;
   if (!r.has("law")) r.fail(r.key("law"), "is required: one of list, uniform, normal, lognormal");
@@ -265,23 +281,28 @@ SizeDistribution read_size_distribution(const YAML::Node& node, const std::strin
   auto bounds = [&] {
     L.min = r.required("min", 0.0, kInf, true);
     L.max = r.required("max", 0.0, kInf, true);
-    if (L.max <= L.min) r.fail(r.key("max"), fmt::format("must be > min = {} (got {})", L.min, L.max));
+    if (L.max <= L.min)
+      r.fail(r.key("max"), fmt::format("must be > min = {} (got {})", L.min, L.max));
   };
   if (law == "list") {
     L.law = SizeLaw::kList;
     L.diameters = r.numbers("diameters", 0.0, kInf, true);
-    if (!r.has("fractions")) r.fail(r.key("fractions"), "is required: one fraction per diameter, summing to 1");
+    if (!r.has("fractions"))
+      r.fail(r.key("fractions"), "is required: one fraction per diameter, summing to 1");
     L.fractions = r.numbers("fractions", 0.0, 1.0, true);
     if (L.fractions.size() != L.diameters.size())
-      r.fail(r.key("fractions"), fmt::format("must have one entry per diameter ({} diameters, {} fractions)",
-                                             L.diameters.size(), L.fractions.size()));
+      r.fail(r.key("fractions"),
+             fmt::format("must have one entry per diameter ({} diameters, {} fractions)",
+                         L.diameters.size(), L.fractions.size()));
     check_sum_to_one(r, "fractions", L.fractions);
     std::vector<double> sorted = L.diameters;
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t i = 1; i < sorted.size(); ++i)
       if (sorted[i] == sorted[i - 1])
-        r.fail(r.key("diameters"), fmt::format("each diameter may appear once ({} is given twice)", sorted[i]));
-    if (!r.has("basis")) r.fail(r.key("basis"), "is required: number or volume (what the fractions count)");
+        r.fail(r.key("diameters"),
+               fmt::format("each diameter may appear once ({} is given twice)", sorted[i]));
+    if (!r.has("basis"))
+      r.fail(r.key("basis"), "is required: number or volume (what the fractions count)");
     L.by_volume = r.choice("basis", "", {"number", "volume"}) == "volume";
     L.min = sorted.front();
     L.max = sorted.back();
@@ -301,9 +322,11 @@ SizeDistribution read_size_distribution(const YAML::Node& node, const std::strin
     bounds();
     const double kept = truncation_mass(L);
     if (!(kept >= 1e-3))
-      r.fail(r.key("min"), fmt::format("the truncation [min, max] = [{}, {}] keeps only {:.3g} % of the {} law; "
-                                       "it must keep at least 0.1 % (check {}, min and max)",
-                                       L.min, L.max, 100.0 * kept, law, normal ? "mean, std" : "median, sigma_ln"));
+      r.fail(
+          r.key("min"),
+          fmt::format("the truncation [min, max] = [{}, {}] keeps only {:.3g} % of the {} law; "
+                      "it must keep at least 0.1 % (check {}, min and max)",
+                      L.min, L.max, 100.0 * kept, law, normal ? "mean, std" : "median, sigma_ln"));
   }
   r.finish();
   return L;
@@ -313,8 +336,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   Scene sc;
   sc.source = file;
   MapReader top(root, "", file);
-  top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles", "contact", "drag",
-              "coupling", "time", "startup", "output", "insitu"});
+  top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles",
+              "contact", "drag", "coupling", "time", "startup", "output", "insitu"});
   sc.name = top.text("name", "scene");
   sc.description = top.text("description", "");
 
@@ -354,8 +377,10 @@ Scene parse(const YAML::Node& root, const std::string& file) {
                                           sc.box.length(d), 2.0 * halo));
       const double n = sc.box.length(d) / f.spacing;
       if (std::abs(n - std::round(n)) > 1e-6)
-        r.fail("fluid.spacing", fmt::format("must divide the periodic width {} m into a whole number "
-                                            "of layers (got {} layers)", sc.box.length(d), n));
+        r.fail("fluid.spacing",
+               fmt::format("must divide the periodic width {} m into a whole number "
+                           "of layers (got {} layers)",
+                           sc.box.length(d), n));
     }
     if (f.enabled && sc.fill_height() < 3 * f.spacing)
       r.fail("fluid.fill_height", "must hold at least 3 fluid layers");
@@ -363,22 +388,28 @@ Scene parse(const YAML::Node& root, const std::string& file) {
 
   {
     const YAML::Node list = top.child("species");
-    if (list && !list.IsSequence()) top.fail("species", "must be a list of {name, diameter, density}");
+    if (list && !list.IsSequence())
+      top.fail("species", "must be a list of {name, diameter, density}");
     for (std::size_t s = 0; list && s < list.size(); ++s) {
       MapReader r(list[s], fmt::format("species.{}", s), file);
       SpeciesSpec sp;
       sp.name = r.text("name", "");
       if (sp.name.empty() || sp.name.find_first_of(":, ") != std::string::npos)
         r.fail(r.key("name"), "must be a non-empty name without ':', ',' or spaces");
-      if (sc.species_index(sp.name) >= 0) r.fail(r.key("name"), "duplicate species name '" + sp.name + "'");
+      if (sc.species_index(sp.name) >= 0)
+        r.fail(r.key("name"), "duplicate species name '" + sp.name + "'");
       const bool one_size = r.has("diameter"), law = r.has("size_distribution");
       if (one_size && law)
-        r.fail(r.key("size_distribution"), "give either 'diameter' (one size) or 'size_distribution', not both");
+        r.fail(r.key("size_distribution"),
+               "give either 'diameter' (one size) or 'size_distribution', not both");
       if (law) {
-        sp.size = read_size_distribution(r.child("size_distribution"), r.key("size_distribution"), file);
+        sp.size =
+            read_size_distribution(r.child("size_distribution"), r.key("size_distribution"), file);
         sp.diameter = sauter_mean(sp.size);
       } else {
-        if (!one_size) r.fail(r.key("diameter"), "is required: a number in (0, inf], or give 'size_distribution'");
+        if (!one_size)
+          r.fail(r.key("diameter"),
+                 "is required: a number in (0, inf], or give 'size_distribution'");
         sp.diameter = r.required("diameter", 0.0, kInf, true);
         sp.size.min = sp.size.max = sp.diameter;
       }
@@ -400,21 +431,28 @@ Scene parse(const YAML::Node& root, const std::string& file) {
                                    : ParticleGroupSpec::Kind::kRandom;
       if (g.kind == ParticleGroupSpec::Kind::kRandom) {
         read_mixture(r, sc, g);
-      } else if (g.kind == ParticleGroupSpec::Kind::kLattice && r.has("species") && r.child("species").IsSequence()) {
-        // a mixed lattice (bidisperse block, thesis §4.6): species dealt to the sites by quota, shuffled
+      } else if (g.kind == ParticleGroupSpec::Kind::kLattice && r.has("species") &&
+                 r.child("species").IsSequence()) {
+        // a mixed lattice (bidisperse block, thesis §4.6): species dealt to the sites by quota,
+        // shuffled
         read_mixture(r, sc, g);
         for (std::size_t i = 0; i < g.mixture.size(); ++i)
           if (!sc.species[sc.species_index(g.mixture[i])].monodisperse())
             r.fail(fmt::format("{}.{}", r.key("species"), i),
-                   fmt::format("species '{}' has a size_distribution; a lattice needs species with one diameter",
+                   fmt::format("species '{}' has a size_distribution; a lattice needs species with "
+                               "one diameter",
                                g.mixture[i]));
       } else {
         g.species = r.text("species", "");
         const int s = sc.species_index(g.species);
-        if (s < 0) r.fail(r.key("species"), fmt::format("'{}' is not a species listed under 'species'", g.species));
+        if (s < 0)
+          r.fail(r.key("species"),
+                 fmt::format("'{}' is not a species listed under 'species'", g.species));
         if (!sc.species[s].monodisperse())
-          r.fail(r.key("species"), fmt::format("species '{}' has a size_distribution; a {} group needs a species "
-                                               "with one diameter (type random takes a size law)", g.species, type));
+          r.fail(r.key("species"),
+                 fmt::format("species '{}' has a size_distribution; a {} group needs a species "
+                             "with one diameter (type random takes a size law)",
+                             g.species, type));
       }
       const double radius = 0.5 * sc.species[sc.species_index(g.species)].diameter;
       g.velocity = r.vec3("velocity", {0, 0, 0});
@@ -424,24 +462,31 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       if (g.kind == ParticleGroupSpec::Kind::kLattice)
         g.fcc = r.choice("lattice", "simple_cubic", {"simple_cubic", "fcc"}) == "fcc";
       if (g.kind == ParticleGroupSpec::Kind::kSingle) {
-        g.position = r.vec3("position", {0.5 * sc.box.hi[0], 0.5 * sc.box.hi[1], 0.5 * sc.box.hi[2]});
+        g.position =
+            r.vec3("position", {0.5 * sc.box.hi[0], 0.5 * sc.box.hi[1], 0.5 * sc.box.hi[2]});
         for (int d = 0; d < 3; ++d)
           if (g.position[d] < sc.box.lo[d] || g.position[d] > sc.box.hi[d])
             r.fail(r.key("position"), "must lie inside domain.size");
-        if (g.position[2] < radius) r.fail(r.key("position"), "the sphere would cut the bottom wall (z < radius)");
+        if (g.position[2] < radius)
+          r.fail(r.key("position"), "the sphere would cut the bottom wall (z < radius)");
       } else {
         g.lo = r.vec3("min", sc.box.lo);
         g.hi = r.vec3("max", sc.box.hi);
         for (int d = 0; d < 3; ++d) {
-          if (g.lo[d] < sc.box.lo[d]) r.fail(r.key("min"), "region must satisfy 0 <= min < max <= domain.size (min < 0)");
-          if (g.hi[d] > sc.box.hi[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max > domain.size)");
-          if (g.hi[d] <= g.lo[d]) r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max <= min)");
+          if (g.lo[d] < sc.box.lo[d])
+            r.fail(r.key("min"), "region must satisfy 0 <= min < max <= domain.size (min < 0)");
+          if (g.hi[d] > sc.box.hi[d])
+            r.fail(r.key("max"),
+                   "region must satisfy 0 <= min < max <= domain.size (max > domain.size)");
+          if (g.hi[d] <= g.lo[d])
+            r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max <= min)");
         }
         if (g.kind == ParticleGroupSpec::Kind::kLattice) {
           // the closest packing of the lattice: simple cubic 1 - pi/6, fcc 1 - pi/(3 sqrt 2)
           const double densest = g.fcc ? 1.0 - M_PI / (3.0 * std::sqrt(2.0)) : 1.0 - M_PI / 6.0;
           g.voidage = r.number("voidage", g.voidage, densest, 1.0, false, true);
-          if (g.mixture.size() > 1) g.seed = r.whole64("seed", 0, 0, std::numeric_limits<std::int64_t>::max());
+          if (g.mixture.size() > 1)
+            g.seed = r.whole64("seed", 0, 0, std::numeric_limits<std::int64_t>::max());
         } else {
           // 1 - 0.64: no random packing is denser than random close packing. Random
           // sequential addition stops far earlier (random_packing.hpp) and says so.
@@ -460,7 +505,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     LinearSpringDashpot& n = sc.contact.normal;
     n.k = r.number("stiffness", n.k, 0.0, kInf, true);
     const bool has_damping = r.has("damping"), has_e = r.has("restitution");
-    if (has_damping && has_e) r.fail("contact.restitution", "give either 'damping' (kg/s) or 'restitution', not both");
+    if (has_damping && has_e)
+      r.fail("contact.restitution", "give either 'damping' (kg/s) or 'restitution', not both");
     n.beta = r.number("damping", 0.0, 0.0, kInf);
     n.restitution = has_e ? r.number("restitution", 1.0, 0.0, 1.0, true) : -1.0;
     n.clip_attraction = r.boolean("clip_attraction", false);
@@ -476,7 +522,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
         tp.stiffness_ratio = t.number("stiffness_ratio", tp.stiffness_ratio, 0.0, 1.0, true);
         const bool has_gamma = t.has("damping"), has_et = t.has("restitution");
         if (has_gamma && has_et)
-          t.fail("contact.tangential.restitution", "give either 'damping' (kg/s) or 'restitution', not both");
+          t.fail("contact.tangential.restitution",
+                 "give either 'damping' (kg/s) or 'restitution', not both");
         tp.damping = t.number("damping", 0.0, 0.0, kInf);
         tp.restitution = has_et ? t.number("restitution", 1.0, 0.0, 1.0, true) : -1.0;
         tp.friction = t.required("friction", 0.0, kInf);
@@ -493,9 +540,10 @@ Scene parse(const YAML::Node& root, const std::string& file) {
         rp.friction = t.required("friction", 0.0, 1.0);
         rp.damping_ratio = t.number("damping_ratio", rp.damping_ratio, 0.0, kInf);
         if (sc.contact.tangential.model == TangentialParams::Model::kNone)
-          t.fail("contact.rolling.model", "'epsd' needs tangential friction (contact.tangential.model: "
-                                          "linear_history); the registered combinations of tangential + "
-                                          "rolling are none + none, linear_history + none, linear_history + epsd");
+          t.fail("contact.rolling.model",
+                 "'epsd' needs tangential friction (contact.tangential.model: "
+                 "linear_history); the registered combinations of tangential + "
+                 "rolling are none + none, linear_history + none, linear_history + epsd");
       }
       t.finish();
     }
@@ -503,7 +551,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   }
   {
     MapReader r(top.child("drag"), "drag", file);
-    const std::string law = r.choice("law", "stokes", {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)});
+    const std::string law =
+        r.choice("law", "stokes", {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)});
     drag::drag_law_from_name(law, sc.drag);
     r.finish();
   }
@@ -513,10 +562,12 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     const std::string sm = r.choice("voidage_smoothing", "single", {"single", "double"});
     sc.double_smoothing.enabled = sm == "double";
     if (sc.double_smoothing.enabled) {
-      sc.double_smoothing.h_over_d = r.number("big_h_over_d", sc.double_smoothing.h_over_d, 0.5, 5.0);
+      sc.double_smoothing.h_over_d =
+          r.number("big_h_over_d", sc.double_smoothing.h_over_d, 0.5, 5.0);
       if (r.has("big_species")) {
         const YAML::Node n = r.child("big_species");
-        if (!n.IsSequence() || n.size() == 0) r.fail(r.key("big_species"), "must be a non-empty list of species names");
+        if (!n.IsSequence() || n.size() == 0)
+          r.fail(r.key("big_species"), "must be a non-empty list of species names");
         for (std::size_t i = 0; i < n.size(); ++i) {
           const std::string k = fmt::format("{}.{}", r.key("big_species"), i);
           if (!n[i].IsScalar() || sc.species_index(n[i].Scalar()) < 0)
@@ -533,22 +584,30 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       for (const char* k : {"big_species", "big_h_over_d"})
         if (r.has(k)) r.fail(r.key(k), "applies only with voidage_smoothing: double");
     }
-    const std::string pc = r.choice("pressure_coupling", "interpolated", {"interpolated", "variational"});
-    sc.pressure_coupling = pc == "variational" ? PressureCoupling::kVariational : PressureCoupling::kInterpolated;
+    const std::string pc =
+        r.choice("pressure_coupling", "interpolated", {"interpolated", "variational"});
+    sc.pressure_coupling =
+        pc == "variational" ? PressureCoupling::kVariational : PressureCoupling::kInterpolated;
     if (sc.pressure_coupling == PressureCoupling::kVariational && sc.double_smoothing.enabled)
-      r.fail(r.key("pressure_coupling"), "variational needs voidage_smoothing: single (the gradient of the "
-                                         "double-smoothed voidage is not implemented); use interpolated");
+      r.fail(r.key("pressure_coupling"),
+             "variational needs voidage_smoothing: single (the gradient of the "
+             "double-smoothed voidage is not implemented); use interpolated");
     sc.hydrostatic_split = r.boolean("hydrostatic_split", false);
     if (sc.hydrostatic_split && sc.pressure_coupling != PressureCoupling::kVariational)
       r.fail(r.key("hydrostatic_split"), "true needs pressure_coupling: variational");
-    if (sc.hydrostatic_split && (sc.gravity[0] != 0.0 || sc.gravity[1] != 0.0 || sc.gravity[2] >= 0.0))
-      r.fail(r.key("hydrostatic_split"), "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
+    if (sc.hydrostatic_split &&
+        (sc.gravity[0] != 0.0 || sc.gravity[1] != 0.0 || sc.gravity[2] >= 0.0))
+      r.fail(r.key("hydrostatic_split"),
+             "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
     sc.sphere_kernel_scale = r.number("sphere_kernel_scale", 1.0, 1.0, 3.0);
-    for (int d = 0; d < 2 && sc.fluid.enabled; ++d) {  // the spheres' halo reaches 2 H (with margin)
-      const double reach = 2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
+    for (int d = 0; d < 2 && sc.fluid.enabled;
+         ++d) {  // the spheres' halo reaches 2 H (with margin)
+      const double reach =
+          2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
       if (sc.box.length(d) < reach)
         r.fail(r.key("sphere_kernel_scale"),
-               fmt::format("{} needs a periodic width >= 2.4 sphere_kernel_scale smoothing_factor spacing = {} m "
+               fmt::format("{} needs a periodic width >= 2.4 sphere_kernel_scale smoothing_factor "
+                           "spacing = {} m "
                            "(the spheres' kernel support with margin); domain.size gives {} m",
                            sc.sphere_kernel_scale, reach, sc.box.length(d)));
     }
@@ -558,7 +617,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     MapReader r(top.child("time"), "time", file);
     sc.time.end = r.number("end", sc.time.end, 0.0, kInf, true);
     sc.time.cfl = r.number("cfl", sc.time.cfl, 0.0, 1.0, true);
-    sc.time.dem_steps_per_contact = r.number("dem_steps_per_contact", sc.time.dem_steps_per_contact, 5.0, 1000.0);
+    sc.time.dem_steps_per_contact =
+        r.number("dem_steps_per_contact", sc.time.dem_steps_per_contact, 5.0, 1000.0);
     sc.time.max_dt_sph = r.number("max_dt_sph", sc.time.max_dt_sph, 0.0, kInf, true);
     r.finish();
   }
@@ -571,7 +631,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   {
     MapReader r(top.child("output"), "output", file);
     sc.output.log_interval = r.number("log_interval", 0.0, 0.0, kInf);
-    sc.output.progress_interval = r.number("progress_interval", sc.output.progress_interval, 0.0, kInf);
+    sc.output.progress_interval =
+        r.number("progress_interval", sc.output.progress_interval, 0.0, kInf);
     {
       MapReader v(r.child("vtk"), "output.vtk", file);
       sc.output.vtk_every = v.number("every", 0.0, 0.0, kInf);
@@ -590,9 +651,11 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       in.pipelines.clear();
       for (std::size_t k = 0; k < list.size(); ++k) {
         const std::string name = list[k].IsScalar() ? list[k].Scalar() : "";
-        if (std::find(std::begin(kPipelineNames), std::end(kPipelineNames), name) == std::end(kPipelineNames))
-          r.fail(fmt::format("insitu.pipelines.{}", k),
-                 fmt::format("must be one of: {} (got '{}')", fmt::join(kPipelineNames, ", "), name));
+        if (std::find(std::begin(kPipelineNames), std::end(kPipelineNames), name) ==
+            std::end(kPipelineNames))
+          r.fail(
+              fmt::format("insitu.pipelines.{}", k),
+              fmt::format("must be one of: {} (got '{}')", fmt::join(kPipelineNames, ", "), name));
         in.pipelines.push_back(name);
       }
     }
@@ -619,14 +682,15 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
   if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = sc.fluid.spacing;
-  if (sc.insitu.reference_velocity == 0.0) {  // auto: hindered settling of the first block or suspension
+  if (sc.insitu.reference_velocity ==
+      0.0) {  // auto: hindered settling of the first block or suspension
     sc.insitu.reference_velocity = -1.0;
     for (const auto& grp : sc.particles) {
       if (grp.kind == ParticleGroupSpec::Kind::kSingle) continue;
       // The group's (first) species; for a size law, diameter is its Sauter mean d32.
       const SpeciesSpec& sp = sc.species[sc.species_index(grp.species)];
-      sc.insitu.reference_velocity = di_felice_hindered_settling(sp.diameter, sp.density, sc.fluid.density,
-                                                                 sc.fluid.viscosity, g, grp.voidage);
+      sc.insitu.reference_velocity = di_felice_hindered_settling(
+          sp.diameter, sp.density, sc.fluid.density, sc.fluid.viscosity, g, grp.voidage);
       break;
     }
   }
@@ -672,11 +736,16 @@ std::string scene_to_yaml(const Scene& sc) {
   vec(sc.gravity);
   const FluidSpec& f = sc.fluid;
   e << YAML::Key << "fluid" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "density" << YAML::Value << f.density << YAML::Key << "viscosity" << YAML::Value << f.viscosity;
-  e << YAML::Key << "spacing" << YAML::Value << f.spacing << YAML::Key << "smoothing_factor" << YAML::Value << f.smoothing_factor;
-  e << YAML::Key << "fill_height" << YAML::Value << f.fill_height << YAML::Key << "expected_speed" << YAML::Value << f.expected_speed;
-  e << YAML::Key << "sound_speed" << YAML::Value << f.sound_speed << YAML::Key << "alpha_artificial" << YAML::Value << f.alpha_artificial;
-  e << YAML::Key << "gamma" << YAML::Value << f.gamma << YAML::Key << "wall_layers" << YAML::Value << f.wall_layers;
+  e << YAML::Key << "density" << YAML::Value << f.density << YAML::Key << "viscosity" << YAML::Value
+    << f.viscosity;
+  e << YAML::Key << "spacing" << YAML::Value << f.spacing << YAML::Key << "smoothing_factor"
+    << YAML::Value << f.smoothing_factor;
+  e << YAML::Key << "fill_height" << YAML::Value << f.fill_height << YAML::Key << "expected_speed"
+    << YAML::Value << f.expected_speed;
+  e << YAML::Key << "sound_speed" << YAML::Value << f.sound_speed << YAML::Key << "alpha_artificial"
+    << YAML::Value << f.alpha_artificial;
+  e << YAML::Key << "gamma" << YAML::Value << f.gamma << YAML::Key << "wall_layers" << YAML::Value
+    << f.wall_layers;
   e << YAML::Key << "enabled" << YAML::Value << f.enabled;
   e << YAML::EndMap;
   e << YAML::Key << "species" << YAML::Value << YAML::BeginSeq;
@@ -686,25 +755,28 @@ std::string scene_to_yaml(const Scene& sc) {
       e << YAML::Key << "diameter" << YAML::Value << s.diameter;
     } else {
       const SizeDistribution& L = s.size;
-      e << YAML::Key << "size_distribution" << YAML::Value << YAML::BeginMap << YAML::Key << "law" << YAML::Value
-        << size_law_name(L.law);
+      e << YAML::Key << "size_distribution" << YAML::Value << YAML::BeginMap << YAML::Key << "law"
+        << YAML::Value << size_law_name(L.law);
       switch (L.law) {
         case SizeLaw::kList:
-          e << YAML::Key << "diameters" << YAML::Value << YAML::Flow << L.diameters << YAML::Key << "fractions"
-            << YAML::Value << YAML::Flow << L.fractions << YAML::Key << "basis" << YAML::Value
-            << (L.by_volume ? "volume" : "number");
+          e << YAML::Key << "diameters" << YAML::Value << YAML::Flow << L.diameters << YAML::Key
+            << "fractions" << YAML::Value << YAML::Flow << L.fractions << YAML::Key << "basis"
+            << YAML::Value << (L.by_volume ? "volume" : "number");
           break;
         case SizeLaw::kNormal:
-          e << YAML::Key << "mean" << YAML::Value << L.mean << YAML::Key << "std" << YAML::Value << L.std;
+          e << YAML::Key << "mean" << YAML::Value << L.mean << YAML::Key << "std" << YAML::Value
+            << L.std;
           break;
         case SizeLaw::kLognormal:
-          e << YAML::Key << "median" << YAML::Value << L.median << YAML::Key << "sigma_ln" << YAML::Value
-            << L.sigma_ln;
+          e << YAML::Key << "median" << YAML::Value << L.median << YAML::Key << "sigma_ln"
+            << YAML::Value << L.sigma_ln;
           break;
-        default: break;
+        default:
+          break;
       }
       if (L.law != SizeLaw::kList)
-        e << YAML::Key << "min" << YAML::Value << L.min << YAML::Key << "max" << YAML::Value << L.max;
+        e << YAML::Key << "min" << YAML::Value << L.min << YAML::Key << "max" << YAML::Value
+          << L.max;
       e << YAML::EndMap;
     }
     e << YAML::Key << "density" << YAML::Value << s.density << YAML::EndMap;
@@ -736,27 +808,31 @@ std::string scene_to_yaml(const Scene& sc) {
     }
     e << YAML::Key << "velocity" << YAML::Value;
     vec(g.velocity);
-    e << YAML::Key << "velocity_jitter" << YAML::Value << g.velocity_jitter << YAML::Key << "velocity_seed"
-      << YAML::Value << g.velocity_seed;
+    e << YAML::Key << "velocity_jitter" << YAML::Value << g.velocity_jitter << YAML::Key
+      << "velocity_seed" << YAML::Value << g.velocity_seed;
     e << YAML::Key << "rigid" << YAML::Value << g.rigid << YAML::EndMap;
   }
   e << YAML::EndSeq;
   const LinearSpringDashpot& n = sc.contact.normal;
-  e << YAML::Key << "contact" << YAML::Value << YAML::BeginMap << YAML::Key << "model" << YAML::Value
-    << "linear_spring_dashpot" << YAML::Key << "stiffness" << YAML::Value << n.k;
-  if (n.restitution > 0) e << YAML::Key << "restitution" << YAML::Value << n.restitution;
-  else e << YAML::Key << "damping" << YAML::Value << n.beta;
-  e << YAML::Key << "clip_attraction" << YAML::Value << n.clip_attraction << YAML::Key << "skin" << YAML::Value
-    << sc.contact.skin;
+  e << YAML::Key << "contact" << YAML::Value << YAML::BeginMap << YAML::Key << "model"
+    << YAML::Value << "linear_spring_dashpot" << YAML::Key << "stiffness" << YAML::Value << n.k;
+  if (n.restitution > 0)
+    e << YAML::Key << "restitution" << YAML::Value << n.restitution;
+  else
+    e << YAML::Key << "damping" << YAML::Value << n.beta;
+  e << YAML::Key << "clip_attraction" << YAML::Value << n.clip_attraction << YAML::Key << "skin"
+    << YAML::Value << sc.contact.skin;
   const TangentialParams& tp = sc.contact.tangential;
   e << YAML::Key << "tangential" << YAML::Value << YAML::BeginMap;
   if (tp.model == TangentialParams::Model::kNone) {
     e << YAML::Key << "model" << YAML::Value << "none";
   } else {
-    e << YAML::Key << "model" << YAML::Value << "linear_history" << YAML::Key << "stiffness_ratio" << YAML::Value
-      << tp.stiffness_ratio;
-    if (tp.restitution > 0) e << YAML::Key << "restitution" << YAML::Value << tp.restitution;
-    else e << YAML::Key << "damping" << YAML::Value << tp.damping;
+    e << YAML::Key << "model" << YAML::Value << "linear_history" << YAML::Key << "stiffness_ratio"
+      << YAML::Value << tp.stiffness_ratio;
+    if (tp.restitution > 0)
+      e << YAML::Key << "restitution" << YAML::Value << tp.restitution;
+    else
+      e << YAML::Key << "damping" << YAML::Value << tp.damping;
     e << YAML::Key << "friction" << YAML::Value << tp.friction;
   }
   e << YAML::EndMap;
@@ -765,37 +841,41 @@ std::string scene_to_yaml(const Scene& sc) {
   if (rp.model == RollingParams::Model::kNone) {
     e << YAML::Key << "model" << YAML::Value << "none";
   } else {
-    e << YAML::Key << "model" << YAML::Value << "epsd" << YAML::Key << "friction" << YAML::Value << rp.friction
-      << YAML::Key << "damping_ratio" << YAML::Value << rp.damping_ratio;
+    e << YAML::Key << "model" << YAML::Value << "epsd" << YAML::Key << "friction" << YAML::Value
+      << rp.friction << YAML::Key << "damping_ratio" << YAML::Value << rp.damping_ratio;
   }
   e << YAML::EndMap << YAML::EndMap;
   e << YAML::Key << "drag" << YAML::Value << YAML::BeginMap << YAML::Key << "law" << YAML::Value
     << drag::drag_law_name(sc.drag) << YAML::EndMap;
-  e << YAML::Key << "coupling" << YAML::Value << YAML::BeginMap << YAML::Key << "voidage_floor" << YAML::Value
-    << sc.voidage_floor << YAML::Key << "voidage_smoothing" << YAML::Value
-    << (sc.double_smoothing.enabled ? "double" : "single") << YAML::Key << "pressure_coupling" << YAML::Value
-    << (sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated") << YAML::Key
-    << "hydrostatic_split" << YAML::Value << sc.hydrostatic_split
-    << YAML::Key << "sphere_kernel_scale" << YAML::Value << sc.sphere_kernel_scale;
+  e << YAML::Key << "coupling" << YAML::Value << YAML::BeginMap << YAML::Key << "voidage_floor"
+    << YAML::Value << sc.voidage_floor << YAML::Key << "voidage_smoothing" << YAML::Value
+    << (sc.double_smoothing.enabled ? "double" : "single") << YAML::Key << "pressure_coupling"
+    << YAML::Value
+    << (sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated")
+    << YAML::Key << "hydrostatic_split" << YAML::Value << sc.hydrostatic_split << YAML::Key
+    << "sphere_kernel_scale" << YAML::Value << sc.sphere_kernel_scale;
   if (sc.double_smoothing.enabled)
-    e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species << YAML::Key
-      << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;
+    e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species
+      << YAML::Key << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;
   e << YAML::EndMap;
-  e << YAML::Key << "time" << YAML::Value << YAML::BeginMap << YAML::Key << "end" << YAML::Value << sc.time.end
-    << YAML::Key << "cfl" << YAML::Value << sc.time.cfl << YAML::Key << "dem_steps_per_contact" << YAML::Value
-    << sc.time.dem_steps_per_contact << YAML::Key << "max_dt_sph" << YAML::Value << sc.time.max_dt_sph << YAML::EndMap;
-  e << YAML::Key << "startup" << YAML::Value << YAML::BeginMap << YAML::Key << "relax_steps" << YAML::Value
-    << sc.startup.relax_steps << YAML::Key << "damping" << YAML::Value << sc.startup.damping << YAML::EndMap;
-  e << YAML::Key << "output" << YAML::Value << YAML::BeginMap << YAML::Key << "log_interval" << YAML::Value
-    << sc.output.log_interval << YAML::Key << "progress_interval" << YAML::Value << sc.output.progress_interval
-    << YAML::Key << "vtk" << YAML::Value << YAML::BeginMap << YAML::Key << "every" << YAML::Value
-    << sc.output.vtk_every << YAML::EndMap << YAML::EndMap;
+  e << YAML::Key << "time" << YAML::Value << YAML::BeginMap << YAML::Key << "end" << YAML::Value
+    << sc.time.end << YAML::Key << "cfl" << YAML::Value << sc.time.cfl << YAML::Key
+    << "dem_steps_per_contact" << YAML::Value << sc.time.dem_steps_per_contact << YAML::Key
+    << "max_dt_sph" << YAML::Value << sc.time.max_dt_sph << YAML::EndMap;
+  e << YAML::Key << "startup" << YAML::Value << YAML::BeginMap << YAML::Key << "relax_steps"
+    << YAML::Value << sc.startup.relax_steps << YAML::Key << "damping" << YAML::Value
+    << sc.startup.damping << YAML::EndMap;
+  e << YAML::Key << "output" << YAML::Value << YAML::BeginMap << YAML::Key << "log_interval"
+    << YAML::Value << sc.output.log_interval << YAML::Key << "progress_interval" << YAML::Value
+    << sc.output.progress_interval << YAML::Key << "vtk" << YAML::Value << YAML::BeginMap
+    << YAML::Key << "every" << YAML::Value << sc.output.vtk_every << YAML::EndMap << YAML::EndMap;
   const InSituSpec& in = sc.insitu;
-  e << YAML::Key << "insitu" << YAML::Value << YAML::BeginMap << YAML::Key << "enabled" << YAML::Value << in.enabled
-    << YAML::Key << "every" << YAML::Value << in.every << YAML::Key << "pipelines" << YAML::Value << YAML::Flow
-    << in.pipelines << YAML::Key << "snapshot_every" << YAML::Value << in.snapshot_every << YAML::Key
-    << "grid_spacing" << YAML::Value << in.grid_spacing << YAML::Key << "reference_velocity" << YAML::Value
-    << in.reference_velocity << YAML::EndMap;
+  e << YAML::Key << "insitu" << YAML::Value << YAML::BeginMap << YAML::Key << "enabled"
+    << YAML::Value << in.enabled << YAML::Key << "every" << YAML::Value << in.every << YAML::Key
+    << "pipelines" << YAML::Value << YAML::Flow << in.pipelines << YAML::Key << "snapshot_every"
+    << YAML::Value << in.snapshot_every << YAML::Key << "grid_spacing" << YAML::Value
+    << in.grid_spacing << YAML::Key << "reference_velocity" << YAML::Value << in.reference_velocity
+    << YAML::EndMap;
   e << YAML::EndMap;
   return std::string(e.c_str()) + "\n";
 }

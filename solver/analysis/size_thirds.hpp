@@ -17,16 +17,16 @@ namespace sphdem {
 
 struct SizeThird {
   std::size_t count = 0;
-  double z_min = 0, z_max = 0;   // heights of the lowest and highest centre in the third (m)
-  double mean_d = 0;             // (m)
-  double d10 = 0, d50 = 0, d90 = 0;  // (m)
+  double z_min = 0, z_max = 0;         // heights of the lowest and highest centre in the third (m)
+  double mean_d = 0;                   // (m)
+  double d10 = 0, d50 = 0, d90 = 0;    // (m)
   std::vector<std::size_t> bin_count;  // spheres per size bin
 };
 
 struct SizeThirds {
-  std::vector<double> bin_edges;  // n_bins + 1 edges (m)
+  std::vector<double> bin_edges;   // n_bins + 1 edges (m)
   std::array<SizeThird, 3> third;  // bottom, middle, top
-  double std_d = 0;  // standard deviation of d over all the spheres (m)
+  double std_d = 0;                // standard deviation of d over all the spheres (m)
 };
 
 // Number percentile p in [0, 1] of sorted values (linear between order statistics).

@@ -1,4 +1,4 @@
-#include "run/random_packing.hpp"
+#include "scene/random_packing.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <numeric>
 #include <random>
 
-#include "run/size_distribution.hpp"
+#include "scene/size_distribution.hpp"
 
 namespace sphdem {
 
@@ -17,7 +17,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kMaxSpheres = 20'000'000;
 
-double sphere_volume(double d) { return kPi * d * d * d / 6.0; }
+double sphere_volume(double d) {
+  return kPi * d * d * d / 6.0;
+}
 
 // Spheres placed so far (earlier groups first, then this group), structure of arrays,
 // threaded into a linked-cell grid: head[cell] is the last sphere put in the cell and
@@ -87,8 +89,10 @@ class SphereGrid {
     }
     for (int d = -1; d <= 1; ++d) {
       int j = i + d;
-      if (wrap_[a]) j = (j + n_[a]) % n_[a];
-      else if (j < 0 || j >= n_[a]) continue;
+      if (wrap_[a])
+        j = (j + n_[a]) % n_[a];
+      else if (j < 0 || j >= n_[a])
+        continue;
       out[m++] = j;
     }
     return m;
@@ -149,29 +153,35 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
       fail("voidage", fmt::format("the region would hold more than {} spheres", kMaxSpheres));
   }
   if (diameter.empty())
-    fail("voidage", fmt::format("the region holds less than half a sphere at voidage {}; raise its size or "
-                                "lower the voidage", g.voidage));
+    fail("voidage",
+         fmt::format("the region holds less than half a sphere at voidage {}; raise its size or "
+                     "lower the voidage",
+                     g.voidage));
 
   // 2. Largest first (the hardest to place while there is room); ties keep draw order.
   std::vector<std::size_t> order(diameter.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return diameter[i] > diameter[j]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t i, std::size_t j) { return diameter[i] > diameter[j]; });
   const double d_max = diameter[order.front()];
 
   // 3. Where centres may go: periodic across a whole periodic width, else inside the region.
   std::array<bool, 3> full{};
   for (int a = 0; a < 3; ++a) {
-    full[a] = a < 2 && sc.box.periodic[a] && std::abs(span[a] - sc.box.length(a)) <= 1e-12 * sc.box.length(a);
+    full[a] = a < 2 && sc.box.periodic[a] &&
+              std::abs(span[a] - sc.box.length(a)) <= 1e-12 * sc.box.length(a);
     if (!full[a] && span[a] < d_max)
-      fail("max", fmt::format("the region is {} m wide along {}, less than the largest diameter {} m", span[a],
-                              "xyz"[a], d_max));
+      fail("max",
+           fmt::format("the region is {} m wide along {}, less than the largest diameter {} m",
+                       span[a], "xyz"[a], d_max));
   }
 
   // 4. The grid holds the earlier groups' spheres that reach into the region's z range.
   double r_other = 0.0;
   std::vector<std::size_t> others;
   for (std::size_t j = 0; j < existing.size(); ++j)
-    if (existing.z[j] + existing.radius[j] > g.lo[2] && existing.z[j] - existing.radius[j] < g.hi[2]) {
+    if (existing.z[j] + existing.radius[j] > g.lo[2] &&
+        existing.z[j] - existing.radius[j] < g.hi[2]) {
       others.push_back(j);
       r_other = std::max(r_other, existing.radius[j]);
     }
@@ -179,8 +189,10 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
   const double reach = 0.5 * d_max + std::max(0.5 * d_max, r_other);  // largest contact distance
   const double v_grid = sc.box.length(0) * sc.box.length(1) * (zhi - zlo);
   const double n_all = static_cast<double>(diameter.size() + others.size());
-  SphereGrid grid(sc.box, zlo, zhi, std::max(reach, std::cbrt(v_grid / n_all)));  // ~1 sphere per cell
-  for (std::size_t j : others) grid.insert(existing.x[j], existing.y[j], existing.z[j], existing.radius[j]);
+  SphereGrid grid(sc.box, zlo, zhi,
+                  std::max(reach, std::cbrt(v_grid / n_all)));  // ~1 sphere per cell
+  for (std::size_t j : others)
+    grid.insert(existing.x[j], existing.y[j], existing.z[j], existing.radius[j]);
 
   // 5. Random sequential addition.
   RandomPacking out;
@@ -199,14 +211,17 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
     std::uint64_t tries = 0;
     for (;;) {
       if (tries == kRsaAttemptsPerSphere)
-        fail("voidage",
-             fmt::format("random sequential addition jammed at solid fraction {:.4f} ({} of {} spheres placed; "
-                         "{} random centres for the next sphere, d = {:.4g} m, all overlapped) short of the target "
-                         "{:.4f} (voidage {}). RSA of equal spheres cannot pass a solid fraction of {} (voidage "
-                         "{:.3f}) and slows down well before it: raise the voidage (0.65 or more is safe for equal "
-                         "spheres) or widen the size distribution",
-                         v_placed / v_region, k, n, tries, 2.0 * r, 1.0 - g.voidage, g.voidage, kRsaSaturation,
-                         1.0 - kRsaSaturation));
+        fail("voidage", fmt::format("random sequential addition jammed at solid fraction {:.4f} "
+                                    "({} of {} spheres placed; "
+                                    "{} random centres for the next sphere, d = {:.4g} m, all "
+                                    "overlapped) short of the target "
+                                    "{:.4f} (voidage {}). RSA of equal spheres cannot pass a solid "
+                                    "fraction of {} (voidage "
+                                    "{:.3f}) and slows down well before it: raise the voidage "
+                                    "(0.65 or more is safe for equal "
+                                    "spheres) or widen the size distribution",
+                                    v_placed / v_region, k, n, tries, 2.0 * r, 1.0 - g.voidage,
+                                    g.voidage, kRsaSaturation, 1.0 - kRsaSaturation));
       ++tries;
       const double x = lo[0] + width[0] * uniform01(position_rng);
       const double y = lo[1] + width[1] * uniform01(position_rng);

@@ -1,4 +1,4 @@
-#include "run/initial_state.hpp"
+#include "scene/initial_state.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "run/random_packing.hpp"
+#include "scene/random_packing.hpp"
 
 namespace sphdem {
 
@@ -18,7 +18,8 @@ BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g, double d
   const double a = std::cbrt(V / (1.0 - g.voidage));
   for (int k = 0; k < 2; ++k) {
     const double span = g.hi[k] - g.lo[k];
-    const bool full = sc.box.periodic[k] && std::abs(span - sc.box.length(k)) < 1e-12 * sc.box.length(k);
+    const bool full =
+        sc.box.periodic[k] && std::abs(span - sc.box.length(k)) < 1e-12 * sc.box.length(k);
     L.count[k] = full ? std::max(1, static_cast<int>(std::lround(span / a)))
                       : static_cast<int>(std::floor(span / a + 1e-9));
     L.spacing[k] = full ? span / L.count[k] : a;
@@ -35,9 +36,11 @@ BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g, double d
 }
 
 BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g) {
-  if (g.mixture.size() <= 1) return block_lattice(sc, g, sc.species[sc.species_index(g.species)].diameter);
+  if (g.mixture.size() <= 1)
+    return block_lattice(sc, g, sc.species[sc.species_index(g.species)].diameter);
   double d3 = 0.0;
-  for (std::size_t i = 0; i < g.mixture.size(); ++i) d3 += g.fractions[i] * std::pow(sc.species[sc.species_index(g.mixture[i])].diameter, 3);
+  for (std::size_t i = 0; i < g.mixture.size(); ++i)
+    d3 += g.fractions[i] * std::pow(sc.species[sc.species_index(g.mixture[i])].diameter, 3);
   return block_lattice(sc, g, std::cbrt(d3));
 }
 
@@ -101,7 +104,9 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
     // Velocity jitter: uniform in [-1, 1) from the top 53 bits of a seeded generator
     // (the same numbers on every standard library, unlike std::uniform_real_distribution).
     std::mt19937_64 jitter_rng(static_cast<std::uint64_t>(g.velocity_seed));
-    auto jitter = [&] { return g.velocity_jitter * (2.0 * static_cast<double>(jitter_rng() >> 11) * 0x1.0p-53 - 1.0); };
+    auto jitter = [&] {
+      return g.velocity_jitter * (2.0 * static_cast<double>(jitter_rng() >> 11) * 0x1.0p-53 - 1.0);
+    };
     // A sphere of species k and radius r: mass m = rho_p pi d^3 / 6 (2.35).
     auto add = [&](double x, double y, double z, int k, double r) {
       const std::size_t i = s.size();
@@ -126,20 +131,25 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
     }
     if (g.kind == ParticleGroupSpec::Kind::kRandom) {
       const RandomPacking P = random_packing(sc, gi, s);
-      for (std::size_t j = 0; j < P.x.size(); ++j) add(P.x[j], P.y[j], P.z[j], P.species[j], P.radius[j]);
+      for (std::size_t j = 0; j < P.x.size(); ++j)
+        add(P.x[j], P.y[j], P.z[j], P.species[j], P.radius[j]);
       continue;
     }
     const BlockLattice L = block_lattice(sc, g);
     double d_max = spec.diameter;
-    for (const auto& name : g.mixture) d_max = std::max(d_max, sc.species[sc.species_index(name)].diameter);
+    for (const auto& name : g.mixture)
+      d_max = std::max(d_max, sc.species[sc.species_index(name)].diameter);
     for (int c = 0; c < 3; ++c) {
       if (L.count[c] < 1)
-        throw SceneError(fmt::format("{}: key 'particles.{}': the region holds no lattice site along "
-                                     "axis {} (spacing {} m)", sc.source, gi, "xyz"[c], L.spacing[c]));
+        throw SceneError(
+            fmt::format("{}: key 'particles.{}': the region holds no lattice site along "
+                        "axis {} (spacing {} m)",
+                        sc.source, gi, "xyz"[c], L.spacing[c]));
       if (L.spacing[c] < d_max * (1.0 - 1e-9))
-        throw SceneError(fmt::format("{}: key 'particles.{}.voidage': lattice spacing {} m along {} is "
-                                     "below the largest diameter {} m; raise the voidage or widen the region",
-                                     sc.source, gi, L.spacing[c], "xyz"[c], d_max));
+        throw SceneError(
+            fmt::format("{}: key 'particles.{}.voidage': lattice spacing {} m along {} is "
+                        "below the largest diameter {} m; raise the voidage or widen the region",
+                        sc.source, gi, L.spacing[c], "xyz"[c], d_max));
     }
     if (L.fcc) {  // nearest sites: half a face diagonal, in a layer and between layers
       const double ax = L.spacing[0], ay = L.spacing[1], az = L.spacing[2];
@@ -153,7 +163,8 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
     }
     const double dz = L.fcc ? 0.5 * L.spacing[2] : L.spacing[2];  // between layers
     if (L.origin[2] - 0.5 * dz < 0 || L.origin[2] < 0.5 * d_max * (1.0 - 1e-12))
-      throw SceneError(fmt::format("{}: key 'particles.{}.min': the block cuts the bottom wall", sc.source, gi));
+      throw SceneError(
+          fmt::format("{}: key 'particles.{}.min': the block cuts the bottom wall", sc.source, gi));
     const int per_cell = L.fcc ? 2 : 1;  // sites a cell in one layer
     const std::vector<int> site = deal_species(
         sc, g, static_cast<std::size_t>(L.count[0]) * L.count[1] * L.count[2] * per_cell);

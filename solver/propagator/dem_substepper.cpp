@@ -1,0 +1,248 @@
+#include "propagator/dem_substepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include "coupling/fluid_force.hpp"
+#include "domain/reorder.hpp"
+
+namespace sphdem {
+
+DemSubstepper::DemSubstepper(const Box& box, const DemStepParams& params, DemParticles spheres)
+    : box_(box), p_(params), s_(std::move(spheres)) {
+  for (std::size_t i = 0; i < s_.size(); ++i)
+    n_groups_ = std::max(n_groups_, s_.rigid_group[i] + 1);
+  group_fx_.assign(n_groups_, 0);
+  group_fy_.assign(n_groups_, 0);
+  group_fz_.assign(n_groups_, 0);
+  group_m_.assign(n_groups_, 0);
+}
+
+// With tangential or rolling parts, the contact history goes to its id-keyed store
+// before the list changes and comes back aligned with the new list.
+void DemSubstepper::rebuild_lists() {
+  DemParticles& s = s_;
+  if (p_.rotation) history_.save(s, contacts_);  // no-op if already saved (a sort)
+  for (std::size_t i = 0; i < s.n_owned; ++i) {
+    s.x[i] = box_.wrap(0, s.x[i]);
+    s.y[i] = box_.wrap(1, s.y[i]);
+    s.x0[i] = s.x[i];
+    s.y0[i] = s.y[i];
+    s.z0[i] = s.z[i];
+  }
+  double rmax = 0;
+  for (std::size_t i = 0; i < s.n_owned; ++i) rmax = std::max(rmax, s.radius[i]);
+  const double skin = p_.skin * 2.0 * rmax;
+  const double contact_cut = 2.0 * rmax + skin;
+  s.resize(s.n_owned);
+  // (a kernel centred on the spheres reaches further by the skin they may move before
+  // the next rebuild)
+  const double needed = std::max({reach_.needed, 2.0 * rmax, reach_.sphere_kernel});
+  const double wanted = std::max(
+      {reach_.wanted, contact_cut, reach_.sphere_kernel > 0 ? reach_.sphere_kernel + skin : 0.0});
+  halo_.build(box_, box_.halo_width(needed, wanted), s.x.data(), s.y.data(), s.z.data(), s.n_owned);
+  s.resize(s.n_owned + halo_.n_ghost());
+  halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
+  for (auto* v : {&s.vx, &s.vy, &s.vz, &s.radius, &s.mass}) halo_.fill(*v);
+  halo_.fill(s.id);
+  if (p_.rotation)
+    for (auto* v : {&s.wx, &s.wy, &s.wz}) halo_.fill(*v);
+  if (s.n_owned > 0) {
+    cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
+    contacts_.build(s, cells_, skin);
+  }
+  if (p_.rotation) history_.load(s, contacts_);
+  ++list_builds_;
+}
+
+void DemSubstepper::sort_by_cell(double cell_size) {
+  if (p_.rotation) history_.save(s_, contacts_);  // while the list matches the arrays
+  s_.resize(s_.n_owned);
+  if (s_.n_owned > 0) sort_owned_by_cell(s_, cell_size);
+  rebuild_lists();
+}
+
+void DemSubstepper::clear_mean_force() {
+  std::fill(s_.fmx.begin(), s_.fmx.end(), 0.0);
+  std::fill(s_.fmy.begin(), s_.fmy.end(), 0.0);
+  std::fill(s_.fmz.begin(), s_.fmz.end(), 0.0);
+}
+
+// Sums force(j) over the spheres of each rigid group into group_f*_, and their masses
+// into group_m_.
+template <class Force>
+void DemSubstepper::sum_over_rigid_groups(Force force) {
+  const DemParticles& s = s_;
+  std::fill(group_fx_.begin(), group_fx_.end(), 0.0);
+  std::fill(group_fy_.begin(), group_fy_.end(), 0.0);
+  std::fill(group_fz_.begin(), group_fz_.end(), 0.0);
+  std::fill(group_m_.begin(), group_m_.end(), 0.0);
+  for (long j = 0; j < static_cast<long>(s.n_owned); ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    double fx, fy, fz;
+    force(j, fx, fy, fz);
+    group_fx_[gr] += fx;
+    group_fy_[gr] += fy;
+    group_fz_[gr] += fz;
+    group_m_[gr] += s.mass[j];
+  }
+}
+
+void DemSubstepper::keep_pressure_gradient() {
+  const DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
+  g_old_x_.assign(s.gx.begin(), s.gx.begin() + n);
+  g_old_y_.assign(s.gy.begin(), s.gy.begin() + n);
+  g_old_z_.assign(s.gz.begin(), s.gz.begin() + n);
+}
+
+// Between two evaluations a sphere must feel one constant pressure force, so that what
+// it receives over the window of the step mean is what the fluid got: the force and
+// acceleration of the last sub-step (the 'old' ones of the next trapezoid) switch to
+// the new g.
+void DemSubstepper::switch_pressure_force() {
+  DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
+  for (long j = 0; j < n; ++j) {
+    const double V = s.volume(j), inv_m = 1.0 / s.mass[j];
+    const double dfx = V * (s.gx[j] - g_old_x_[j]), dfy = V * (s.gy[j] - g_old_y_[j]),
+                 dfz = V * (s.gz[j] - g_old_z_[j]);
+    s.fx[j] += dfx;
+    s.fy[j] += dfy;
+    s.fz[j] += dfz;
+    if (s.rigid_group[j] >= 0) continue;  // below: the group's share
+    s.ax[j] += dfx * inv_m;
+    s.ay[j] += dfy * inv_m;
+    s.az[j] += dfz * inv_m;
+  }
+  if (n_groups_ == 0) return;
+  sum_over_rigid_groups([&](long j, double& fx, double& fy, double& fz) {
+    const double V = s.volume(j);
+    fx = V * (s.gx[j] - g_old_x_[j]);
+    fy = V * (s.gy[j] - g_old_y_[j]);
+    fz = V * (s.gz[j] - g_old_z_[j]);
+  });
+  for (long j = 0; j < n; ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    s.ax[j] += group_fx_[gr] / group_m_[gr];
+    s.ay[j] += group_fy_[gr] / group_m_[gr];
+    s.az[j] += group_fz_[gr] / group_m_[gr];
+  }
+}
+
+// Rigid groups share their total force equally (thesis §4.5).
+void DemSubstepper::forces(bool accumulate_mean, double weight, double dt_springs) {
+  DemParticles& s = s_;
+  if (s.n_owned == 0) return;
+  compute_contact_forces(s, contacts_, p_.law, history_, halo_.images(), 0.0, dt_springs);
+  const long n = static_cast<long>(s.n_owned);
+  const bool variational = p_.variational;
+  const auto& g = p_.gravity;
+  const drag::Fluid& fluid = p_.fluid;
+  std::visit(
+      [&](const auto& law) {
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
+        for (long j = 0; j < n; ++j) {
+          double fx, fy, fz;
+          fluid_force_on_sphere(s, j, law, fluid, fx, fy, fz);
+          if (accumulate_mean) {  // trapezoidal impulse of this sub-step: 0.5 dt (f_old + f_new)
+            // (with the variational coupling the constant pressure part 2 V g is not in it)
+            const double vp2 = variational ? 2.0 * s.volume(j) : 0.0;
+            s.fmx[j] += weight * (s.fx[j] + fx - vp2 * s.gx[j]);
+            s.fmy[j] += weight * (s.fy[j] + fy - vp2 * s.gy[j]);
+            s.fmz[j] += weight * (s.fz[j] + fz - vp2 * s.gz[j]);
+          }
+          s.fx[j] = fx;
+          s.fy[j] = fy;
+          s.fz[j] = fz;
+          const double inv_m = 1.0 / s.mass[j];
+          s.ax[j] = (s.cx[j] + fx) * inv_m + g[0];
+          s.ay[j] = (s.cy[j] + fy) * inv_m + g[1];
+          s.az[j] = (s.cz[j] + fz) * inv_m + g[2];
+        }
+      },
+      p_.drag);
+  if (n_groups_ == 0) return;
+  sum_over_rigid_groups([&](long j, double& fx, double& fy, double& fz) {
+    fx = s.ax[j] * s.mass[j];
+    fy = s.ay[j] * s.mass[j];
+    fz = s.az[j] * s.mass[j];
+  });
+  for (long j = 0; j < n; ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    s.ax[j] = group_fx_[gr] / group_m_[gr];
+    s.ay[j] = group_fy_[gr] / group_m_[gr];
+    s.az[j] = group_fz_[gr] / group_m_[gr];
+  }
+}
+
+// Velocity-Verlet sub-steps with the fluid fields at the spheres held fixed (physics.md
+// §4). The fluid impulse of the second half of one step and the first half of the next
+// make the mean force fm that the fluid gets back at the next evaluation, so every
+// impulse is returned exactly once.
+void DemSubstepper::half_step(double dt, bool first_half) {
+  DemParticles& s = s_;
+  if (s.n_owned == 0) return;
+  const long n = static_cast<long>(s.n_owned);
+  const int per_half = std::max(1, static_cast<int>(std::ceil(0.5 * dt / p_.dt_max)));
+  const double h = 0.5 * dt / per_half;
+  dt_ = h;
+  substeps_ = 2 * per_half;
+  if (!first_half) clear_mean_force();  // start the window of the next mean force
+  const double half_skin = 0.5 * contacts_.skin;
+  a_old_x_.resize(n);
+  a_old_y_.resize(n);
+  a_old_z_.resize(n);
+  for (int k = 0; k < per_half; ++k) {
+    double max_disp2 = 0.0;
+    const double finish = k > 0 ? 0.5 * h : 0.0;  // the previous sub-step's corrector, fused
+#pragma omp parallel for schedule(static) reduction(max : max_disp2) if (n > kMinParallelSpheres)
+    for (long j = 0; j < n; ++j) {
+      // v_n + h (a_old + a_new)/2 of the sub-step before (below for the last one)
+      s.vx[j] += finish * (s.ax[j] - a_old_x_[j]);
+      s.vy[j] += finish * (s.ay[j] - a_old_y_[j]);
+      s.vz[j] += finish * (s.az[j] - a_old_z_[j]);
+      // x += h (v + h a/2); v -> v + h a_old, the predicted end-of-step velocity at which
+      // the velocity-dependent forces (dashpot, drag) are evaluated: second order, where
+      // the half-step velocity would make the dashpot first order (e_n off by ~eta h/2).
+      s.x[j] += h * (s.vx[j] + 0.5 * h * s.ax[j]);
+      s.y[j] += h * (s.vy[j] + 0.5 * h * s.ay[j]);
+      s.z[j] += h * (s.vz[j] + 0.5 * h * s.az[j]);
+      s.vx[j] += h * s.ax[j];
+      s.vy[j] += h * s.ay[j];
+      s.vz[j] += h * s.az[j];
+      a_old_x_[j] = s.ax[j];
+      a_old_y_[j] = s.ay[j];
+      a_old_z_[j] = s.az[j];
+      const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
+      max_disp2 = std::max(max_disp2, dx * dx + dy * dy + dz * dz);
+    }
+    if (p_.rotation) {
+      if (k > 0) correct_spin(s, h, torque_old_);
+      predict_spin(s, h, torque_old_);
+    }
+    if (max_disp2 > half_skin * half_skin) {
+      rebuild_lists();
+    } else {
+      halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
+      for (auto* v : {&s.vx, &s.vy, &s.vz}) halo_.fill(*v);
+      if (p_.rotation)
+        for (auto* v : {&s.wx, &s.wy, &s.wz}) halo_.fill(*v);
+    }
+    forces(true, 0.5 * h / dt, h);
+  }
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
+  for (long j = 0; j < n; ++j) {  // the last sub-step's v_n + h (a_old + a_new)/2
+    s.vx[j] += 0.5 * h * (s.ax[j] - a_old_x_[j]);
+    s.vy[j] += 0.5 * h * (s.ay[j] - a_old_y_[j]);
+    s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[j]);
+  }
+  if (p_.rotation) correct_spin(s, h, torque_old_);
+}
+
+}  // namespace sphdem

@@ -1,0 +1,89 @@
+#pragma once
+// The DEM side of the propagator as its own unit: the spheres, their halo and contact
+// list, the contact history, and the velocity-Verlet sub-steps over half an SPH step with
+// the fluid fields at the spheres held (physics.md §4). The coupled step (simulation.hpp)
+// writes the fluid fields at the spheres and reads back their mean force fm.
+#include <vector>
+
+#include "dem/contact_forces.hpp"
+#include "dem/contact_history.hpp"
+#include "dem/contact_registry.hpp"
+#include "dem/dem_particles.hpp"
+#include "dem/rotation.hpp"
+#include "domain/box.hpp"
+#include "domain/cell_list.hpp"
+#include "domain/periodic_halo.hpp"
+#include "propagator/step_params.hpp"
+
+namespace sphdem {
+
+// Below this many spheres the sphere loops run on one thread: a parallel region costs
+// more than the work (a single settling sphere takes ~10^5 sub-steps).
+constexpr long kMinParallelSpheres = 256;
+
+// How far the fluid side reaches into the sphere halo: `needed` and `wanted` (with the
+// fluid's Verlet skin) from the fluid particles, `sphere_kernel` a kernel centred on the
+// spheres (double smoothing's big spheres, 3.9), which the contact skin extends.
+struct FluidReach {
+  double needed = 0, wanted = 0, sphere_kernel = 0;
+};
+
+class DemSubstepper {
+ public:
+  DemSubstepper(const Box& box, const DemStepParams& params, DemParticles spheres);
+
+  DemParticles& spheres() { return s_; }
+  const DemParticles& spheres() const { return s_; }
+  const DemStepParams& params() const { return p_; }
+  const PeriodicHalo& halo() const { return halo_; }
+  const ContactNeighbourList& contacts() const { return contacts_; }
+  const ContactHistory& contact_history() const { return history_; }
+  std::vector<ContactHistory::Record> contact_records() const {
+    return history_.records(s_, contacts_);
+  }
+  double dt() const { return dt_; }           // the last sub-step
+  int substeps() const { return substeps_; }  // per SPH step
+  // Sphere halo and contact list builds so far: a list into the halo is stale once it changes.
+  long list_builds() const { return list_builds_; }
+
+  void set_fluid_reach(const FluidReach& reach) { reach_ = reach; }
+  // The sphere halo (wide enough for the fluid's reach and for contacts) and the contact
+  // list at its cut-off; the contact history follows the new list.
+  void rebuild_lists();
+  // Owned spheres re-sorted into cells of this size (memory locality), then the lists.
+  void sort_by_cell(double cell_size);
+  // Sub-steps over one half of an SPH step of length dt.
+  void half_step(double dt, bool first_half);
+  // Fluid force (2.68) and contact force (2.36) on each owned sphere, then its
+  // acceleration (2.35). With accumulate_mean, adds weight * (fluid force) to fm;
+  // dt_springs: time by which the tangential and rolling springs advance.
+  void forces(bool accumulate_mean, double weight, double dt_springs = 0.0);
+  // The variational coupling switches the spheres' pressure force: keep g before the
+  // pass, then add V (g - g_kept) to the force and acceleration of the last sub-step.
+  void keep_pressure_gradient();
+  void switch_pressure_force();
+  void clear_mean_force();
+
+ private:
+  template <class Force>
+  void sum_over_rigid_groups(Force force);
+
+  Box box_;
+  DemStepParams p_;
+  DemParticles s_;
+  PeriodicHalo halo_;
+  CellList cells_;
+  ContactNeighbourList contacts_;
+  ContactHistory history_;
+  FluidReach reach_;
+  std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // accelerations of the previous sub-step
+  std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // g before a variational coupling pass
+  OldTorque torque_old_;                             // torques of the previous sub-step
+  std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
+  int n_groups_ = 0;
+  double dt_ = 0;
+  int substeps_ = 0;
+  long list_builds_ = 0;
+};
+
+}  // namespace sphdem

@@ -1,0 +1,419 @@
+#include "propagator/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "coupling/interpolation.hpp"
+#include "coupling/pressure_coupling.hpp"
+#include "coupling/reaction.hpp"
+#include "coupling/voidage.hpp"
+#include "domain/reorder.hpp"
+#include "scene/initial_state.hpp"
+#include "sph/density_rate.hpp"
+#include "sph/kernel.hpp"
+#include "sph/momentum.hpp"
+
+namespace sphdem {
+
+namespace {
+
+// Verlet skin of the fluid's lists (fluid-fluid and fluid-sphere), in units of the
+// largest h at the build: the lists hold the pairs within support + skin and are rebuilt
+// once the particles' displacements and the growth of h have used the skin up.
+constexpr double kFluidSkin = 0.2;
+
+DemParticles placed_spheres(const Scene& scene, FluidParticles& fluid) {
+  DemParticles spheres;
+  place_particles(scene, fluid, spheres);
+  return spheres;
+}
+
+}  // namespace
+
+Simulation::Simulation(const Scene& scene)
+    : scene_(scene),
+      params_(compile_step_params(scene_)),
+      dem_(params_.box, params_.dem, placed_spheres(scene_, fluid_)) {
+  build_initial_state();
+}
+
+std::size_t Simulation::fluid_count() const {
+  return static_cast<std::size_t>(
+      std::count(fluid_.kind.begin(), fluid_.kind.begin() + fluid_.n_owned, kFluid));
+}
+std::size_t Simulation::wall_count() const {
+  return fluid_.n_owned - fluid_count();
+}
+
+double Simulation::fluid_cutoff() const {
+  double hmax = 0;
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a) hmax = std::max(hmax, fluid_.h[a]);
+  if (hmax == 0.0) {  // no fluid (dry DEM): bin at the contact reach instead
+    const DemParticles& s = dem_.spheres();
+    double rmax = 0;
+    for (std::size_t i = 0; i < s.n_owned; ++i) rmax = std::max(rmax, s.radius[i]);
+    return std::max(2.0 * rmax * (1.0 + params_.dem.skin), 1e-12);
+  }
+  return kernel::kSupport * hmax;
+}
+
+// Hydrostatic start (replaces most of the thesis' ~1000 relaxation steps): on the
+// lattice, m_a/rho_a = dx^3 exactly, and rho_a = eps_a rho0 (1 + rho0 g (H - z)/B)^(1/gamma)
+// is the Tait density of the hydrostatic pressure at the particle's voidage.
+void Simulation::build_initial_state() {
+  const FluidStepParams& p = params_.fluid;
+  const double dx = p.spacing, dx3 = dx * dx * dx;
+  const double g = std::abs(params_.gravity[2]);
+  const double H = p.fill_height;
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
+    fluid_.h[a] = p.smoothing_factor * dx;
+    fluid_.inv_h[a] = 1.0 / fluid_.h[a];
+    fluid_.eps[a] = 1.0;
+  }
+  // m/rho = dx^3 for the double smoothing (3.10)
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
+    fluid_.rho[a] = p.eos.rho0;
+    fluid_.mass[a] = p.eos.rho0 * dx3;
+  }
+  rebuild_neighbours();
+  compute_voidage();
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
+    const double P = p.eos.rho0 * g * (H - fluid_.z[a]);
+    fluid_.rho[a] = p.eos.density(P, fluid_.eps[a]);
+    fluid_.mass[a] = fluid_.rho[a] * dx3;
+  }
+  refresh();
+  next_dt();
+}
+
+// Every list anew: the fluid's halo, cells and half pair list at 2 h_max + skin, then the
+// spheres' halo and contact list and the fluid-sphere pairs.
+void Simulation::rebuild_neighbours() {
+  FluidParticles& f = fluid_;
+  const Box& box = params_.box;
+  // Owned particles back into the box; halo copies of those near periodic faces.
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    f.x[a] = box.wrap(0, f.x[a]);
+    f.y[a] = box.wrap(1, f.y[a]);
+  }
+  const double support = fluid_cutoff();
+  hmax_at_build_ = f.n_owned > 0 ? support / kernel::kSupport : 0.0;
+  fluid_skin_ = kFluidSkin * hmax_at_build_;
+  cell_size_ = support + fluid_skin_;
+  f.resize(f.n_owned);
+  fluid_halo_.build(box, box.halo_width(support, cell_size_), f.x.data(), f.y.data(), f.z.data(),
+                    f.n_owned);
+  f.resize(f.n_owned + fluid_halo_.n_ghost());
+  fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
+  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.eps})
+    fluid_halo_.fill(*v);
+  fluid_halo_.fill(f.kind);
+  fluid_halo_.fill(f.id);
+  fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
+  fluid_pairs_.build(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned, cell_size_, true,
+                     /*half=*/true);
+  xr_.assign(f.x.begin(), f.x.begin() + f.n_owned);
+  yr_.assign(f.y.begin(), f.y.begin() + f.n_owned);
+  zr_.assign(f.z.begin(), f.z.begin() + f.n_owned);
+  fluid_lists_stale_ = false;
+  ++neighbour_builds_;
+  // The sphere halo must cover the fluid-sphere kernel (with the skin) and the double
+  // smoothing's big-sphere kernel.
+  const CouplingParams& c = params_.coupling;
+  dem_.set_fluid_reach({c.sphere_kernel_scale * kernel::kSupport * hmax_at_build_,
+                        fluid_sphere_cutoff(), c.big_cutoff});
+  dem_.rebuild_lists();
+  build_sphere_pairs();
+}
+
+// Verlet criteria (the lists were built at 2 h_max + skin, the fluid-sphere pairs at
+// 2 H_max + skin with H = scale h):
+//  - fluid pairs: 2 max|x - x_build| + 2 (h_max - h_max,build) <= skin;
+//  - fluid-sphere pairs: max|x - x_build| + max|x_j - x_j,halo| + 2 scale (h_max - h_max,build)
+//    <= skin, with the spheres' displacement since their halo was built;
+// otherwise the lists are rebuilt. Between rebuilds the halo copies are refreshed.
+void Simulation::update_neighbours() {
+  FluidParticles& f = fluid_;
+  const DemParticles& s = dem_.spheres();
+  const long nf = static_cast<long>(f.n_owned), ns = static_cast<long>(s.n_owned);
+  if (fluid_lists_stale_ || static_cast<long>(xr_.size()) != nf) {
+    rebuild_neighbours();
+    return;
+  }
+  double hmax = 0.0, df2 = 0.0, ds2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : hmax, df2)
+  for (long a = 0; a < nf; ++a) {
+    hmax = std::max(hmax, f.h[a]);
+    const double dx = f.x[a] - xr_[a], dy = f.y[a] - yr_[a], dz = f.z[a] - zr_[a];
+    df2 = std::max(df2, dx * dx + dy * dy + dz * dz);
+  }
+#pragma omp parallel for schedule(static) reduction(max : ds2) if (ns > kMinParallelSpheres)
+  for (long j = 0; j < ns; ++j) {
+    const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
+    ds2 = std::max(ds2, dx * dx + dy * dy + dz * dz);
+  }
+  const double growth = kernel::kSupport * std::max(0.0, hmax - hmax_at_build_);
+  const double df = std::sqrt(df2), ds = std::sqrt(ds2);
+  if (2.0 * df + growth > fluid_skin_) {
+    rebuild_neighbours();
+    return;
+  }
+  fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
+  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.h, &f.inv_h, &f.rho}) fluid_halo_.fill(*v);
+  if (params_.coupling.double_smoothing)  // its re-smoothing walks the fluid's cells (3.10)
+    fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
+  if (nf > 0 && !sphere_pairs_stale() &&
+      df + ds + params_.coupling.sphere_kernel_scale * growth > fluid_skin_)
+    dem_.rebuild_lists();  // a new sphere halo, so that it covers the new pairs
+  if (sphere_pairs_stale()) build_sphere_pairs();
+}
+
+// The fluid-sphere Verlet list, from the spheres (owned + halo) binned now.
+void Simulation::build_sphere_pairs() {
+  const DemParticles& s = dem_.spheres();
+  sphere_pairs_built_at_ = dem_.list_builds();
+  if (fluid_.n_owned == 0) return;  // dry DEM
+  const double cut = fluid_sphere_cutoff();
+  sphere_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cut, 2);
+  sphere_pairs_.build_list(fluid_, sphere_cells_, params_.coupling.sphere_kernel_scale, cut);
+}
+
+double Simulation::fluid_sphere_cutoff() const {
+  return params_.coupling.sphere_kernel_scale * kernel::kSupport * hmax_at_build_ + fluid_skin_;
+}
+
+// The fluid-sphere pairs' kernel values of this step and the voidage (2.50), or with
+// double smoothing the small spheres' part (3.8) plus the big spheres smoothed apart
+// (3.9) and again with the fluid kernel (3.10).
+void Simulation::compute_voidage() {
+  FluidParticles& f = fluid_;
+  const DemParticles& s = dem_.spheres();
+  const CouplingParams& c = params_.coupling;
+  sphere_pairs_.evaluate(f, s, c.variational);
+  if (!c.double_smoothing) {
+    voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, c.voidage_floor);
+    return;
+  }
+  big_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), c.big_cutoff);
+  smooth_big_spheres(f, s, big_cells_, c.is_big_species, c.big_h_over_d, big_fraction_);
+  fluid_halo_.fill(big_fraction_.phi);
+  fluid_halo_.fill(big_fraction_.phi_over_d);
+  resmooth_with_fluid_kernel(f, fluid_cells_, big_fraction_, big_solid_, big_solid_over_d_);
+  const BigSpheresSmoothedApart big{c.is_big_species, big_solid_, big_solid_over_d_};
+  voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, c.voidage_floor, &big);
+}
+
+void Simulation::update_smoothing_length() {
+  FluidParticles& f = fluid_;
+  const double sigma = params_.fluid.smoothing_factor;
+  const long n = static_cast<long>(f.n_owned);
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    f.h[a] = sigma * std::cbrt(f.mass[a] / f.rho[a]);  // (2.65)
+    f.inv_h[a] = 1.0 / f.h[a];
+  }
+}
+
+void Simulation::update_pressure() {
+  FluidParticles& f = fluid_;
+  const TaitEquationOfState& eos = params_.fluid.eos;
+  const long n = static_cast<long>(f.n_owned);
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    f.P[a] = eos.pressure(f.rho[a], f.eps[a]);      // (2.58)
+    f.cs[a] = eos.sound_speed(f.rho[a], f.eps[a]);  // (2.59)
+  }
+  fluid_halo_.fill(f.P);
+  fluid_halo_.fill(f.cs);
+}
+
+void Simulation::refresh() {
+  fluid_lists_stale_ = true;
+  compute_fluid_side(true);
+  dem_.forces(false, 0.0);
+}
+
+// Passes that follow the drift: voidage -> density rate -> pressure -> theta ->
+// interpolation at spheres -> reaction on the fluid. Leaves (ax, ay, az) complete.
+void Simulation::compute_fluid_side(bool hold_spheres) {
+  FluidParticles& f = fluid_;
+  DemParticles& s = dem_.spheres();
+  const bool variational = params_.coupling.variational;
+  Lap lap{timers_};
+  update_smoothing_length();
+  lap(PassTimers::kIntegrate);
+  update_neighbours();
+  lap(PassTimers::kNeighbours);
+  compute_voidage();
+  fluid_halo_.fill(f.eps);
+  lap(PassTimers::kVoidage);
+  update_pressure();
+  omega_bounded_ =
+      compute_density_rate(f, fluid_pairs_, pair_scratch_, variational, params_.fluid.split);
+  fluid_halo_.fill(f.omega);
+  fluid_halo_.fill(f.p_term);
+  lap(PassTimers::kDensity);
+  compute_fluid_acceleration(f, fluid_pairs_, params_.fluid.momentum, pair_scratch_);
+  for (auto* v : {&f.thx, &f.thy, &f.thz}) fluid_halo_.fill(*v);
+  const auto& g = params_.gravity;
+  const long n = static_cast<long>(f.n_owned);
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    const bool mobile = f.kind[a] == kFluid;
+    f.ax[a] = mobile ? f.thx[a] + g[0] : 0.0;
+    f.ay[a] = mobile ? f.thy[a] + g[1] : 0.0;
+    f.az[a] = mobile ? f.thz[a] + g[2] : 0.0;
+  }
+  lap(PassTimers::kMomentum);
+  interpolate_fluid_at_spheres(s, f, sphere_pairs_, dem_.halo().source(), sphere_scratch_);
+  if (variational) apply_variational_pressure(hold_spheres);
+  lap(PassTimers::kInterp);
+  if (hold_spheres) {
+    // Held spheres: the force they feel now is what the fluid gets back (with the
+    // variational coupling the pressure part has been returned already, pair by pair).
+    dem_.forces(false, 0.0);
+    for (std::size_t j = 0; j < s.n_owned; ++j) {
+      const double vp = variational ? s.volume(j) : 0.0;
+      s.fmx[j] = s.fx[j] - vp * s.gx[j];
+      s.fmy[j] = s.fy[j] - vp * s.gy[j];
+      s.fmz[j] = s.fz[j] - vp * s.gz[j];
+    }
+  }
+  const PeriodicHalo& sphere_halo = dem_.halo();
+  for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard}) sphere_halo.fill(*v);
+  add_reaction_on_fluid(f, s, sphere_pairs_);
+  lap(PassTimers::kReaction);
+}
+
+// Variational pressure coupling (coupling/pressure_coupling.hpp): the fluid gets its
+// share now, the spheres' g becomes their pressure force / V, and unless they are held
+// their force of the last sub-step switches to it (DemSubstepper::switch_pressure_force).
+void Simulation::apply_variational_pressure(bool hold_spheres) {
+  dem_.keep_pressure_gradient();
+  walls_on_spheres_z_ =
+      couple_pressure_variationally(fluid_, dem_.spheres(), sphere_pairs_, dem_.halo().source(),
+                                    sphere_scratch_, params_.fluid.split);
+  if (!hold_spheres) dem_.switch_pressure_force();
+}
+
+void Simulation::relax() {
+  for (int k = 0; k < params_.fluid.relax_steps; ++k) advance(true);
+  // Release at t = 0: spheres start from rest relative to their initial velocity.
+  time_ = 0.0;
+  steps_ = 0;
+  dem_.forces(false, 0.0);
+  dem_.clear_mean_force();  // the first mean-force window opens now
+}
+
+void Simulation::step() {
+  advance(false);
+}
+
+// One SPH step, symplectic position-Verlet (the scheme of DualSPHysics, which keeps
+// density and pressure in step with the positions; a kick-drift-kick with the
+// pressure half a step behind the positions anti-damps acoustic modes):
+//   1. predictor: x, u, rho to n+1/2 with the rates of the last evaluation
+//   2. DEM sub-steps over the first half (fluid fields at the spheres held)
+//   3. neighbours at n+1/2; voidage -> density rate -> h, P -> theta -> interpolation
+//      at spheres -> reaction of the spheres' mean force on the fluid
+//   4. corrector: u^{n+1} = u^n + dt a^{n+1/2}, x^{n+1} = x^{n+1/2} + dt/2 u^{n+1},
+//      rho^{n+1} = rho^n (2 - e)/(2 + e), e = -dt drho/rho
+//   5. DEM sub-steps over the second half with the new fluid fields; next dt (CFL)
+void Simulation::advance(bool hold_spheres) {
+  FluidParticles& f = fluid_;
+  const double dt = dt_sph_;
+  const long n = static_cast<long>(f.n_owned);
+  Lap lap{timers_};
+  u0x_.resize(n);
+  u0y_.resize(n);
+  u0z_.resize(n);
+  rho0_.resize(n);
+  const double keep = hold_spheres ? 1.0 - params_.fluid.relax_damping : 1.0;
+  if (++steps_since_sort_ >= sort_interval_) {  // keep neighbours close in memory
+    steps_since_sort_ = 0;
+    f.resize(f.n_owned);
+    sort_owned_by_cell(f, cell_size_ / 2);
+    fluid_lists_stale_ = true;
+    dem_.sort_by_cell(cell_size_ / 2);  // the DEM sub-steps below use its halo and contact list
+  }
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    rho0_[a] = f.rho[a];
+    f.rho[a] += 0.5 * dt * f.drho[a];
+    u0x_[a] = f.vx[a] * keep;
+    u0y_[a] = f.vy[a] * keep;
+    u0z_[a] = f.vz[a] * keep;
+    if (f.kind[a] != kFluid) continue;
+    f.x[a] += 0.5 * dt * u0x_[a];
+    f.y[a] += 0.5 * dt * u0y_[a];
+    f.z[a] += 0.5 * dt * u0z_[a];
+    f.vx[a] = u0x_[a] + 0.5 * dt * f.ax[a];
+    f.vy[a] = u0y_[a] + 0.5 * dt * f.ay[a];
+    f.vz[a] = u0z_[a] + 0.5 * dt * f.az[a];
+  }
+  lap(PassTimers::kIntegrate);
+  if (!hold_spheres) dem_.half_step(dt, /*first_half=*/true);
+  lap(PassTimers::kDem);
+  compute_fluid_side(hold_spheres);
+  lap.restart();  // compute_fluid_side timed its own passes
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    const double e = -dt * f.drho[a] / f.rho[a];
+    f.rho[a] = rho0_[a] * (2.0 - e) / (2.0 + e);
+    if (f.kind[a] != kFluid) continue;
+    f.vx[a] = u0x_[a] + dt * f.ax[a];
+    f.vy[a] = u0y_[a] + dt * f.ay[a];
+    f.vz[a] = u0z_[a] + dt * f.az[a];
+    f.x[a] += 0.5 * dt * f.vx[a];
+    f.y[a] += 0.5 * dt * f.vy[a];
+    f.z[a] += 0.5 * dt * f.vz[a];
+  }
+  lap(PassTimers::kIntegrate);
+  if (!hold_spheres) dem_.half_step(dt, /*first_half=*/false);
+  lap(PassTimers::kDem);
+  check_finite();
+  if (!hold_spheres) {
+    time_ += dt;
+    ++steps_;
+  }
+  next_dt();
+  lap(PassTimers::kOther);
+}
+
+void Simulation::next_dt() {
+  const FluidParticles& f = fluid_;
+  const FluidStepParams& p = params_.fluid;
+  double dt = p.max_dt;
+  const double nu = p.kinematic_viscosity;
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    if (f.kind[a] != kFluid) continue;
+    dt = std::min(dt, f.dt_limit[a]);                 // CFL (3.5)
+    dt = std::min(dt, 0.125 * f.h[a] * f.h[a] / nu);  // viscous diffusion
+    const double acc = std::sqrt(f.ax[a] * f.ax[a] + f.ay[a] * f.ay[a] + f.az[a] * f.az[a]);
+    if (acc > 0) dt = std::min(dt, 0.25 * std::sqrt(f.h[a] / acc));  // force
+  }
+  dt_sph_ = dt;
+}
+
+void Simulation::check_finite() const {
+  const FluidParticles& f = fluid_;
+  for (std::size_t a = 0; a < f.n_owned; ++a)
+    if (!std::isfinite(f.x[a] + f.y[a] + f.z[a] + f.vx[a] + f.vy[a] + f.vz[a] + f.rho[a]))
+      throw std::runtime_error(
+          fmt::format("step {} (t = {:.6g} s): fluid particle id {} has a non-finite "
+                      "state; reduce time.cfl or raise fluid.sound_speed",
+                      steps_, time_, f.id[a]));
+  const DemParticles& s = dem_.spheres();
+  for (std::size_t j = 0; j < s.n_owned; ++j)
+    if (!std::isfinite(s.x[j] + s.y[j] + s.z[j] + s.vx[j] + s.vy[j] + s.vz[j] + s.wx[j] + s.wy[j] +
+                       s.wz[j]))
+      throw std::runtime_error(
+          fmt::format("step {} (t = {:.6g} s): sphere id {} has a non-finite state; "
+                      "raise time.dem_steps_per_contact",
+                      steps_, time_, s.id[j]));
+}
+
+}  // namespace sphdem

@@ -1,0 +1,128 @@
+#pragma once
+// One coupled SPH-DEM run: the fluid arrays and their neighbour structures, the DEM
+// sub-stepper (dem_substepper.hpp) with the spheres, and the coupled step that advances
+// them (see advance() for the passes). The passes read compiled StepParams, not the scene.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "coupling/double_smoothing.hpp"
+#include "coupling/fluid_sphere_pairs.hpp"
+#include "domain/cell_list.hpp"
+#include "domain/neighbour_list.hpp"
+#include "domain/periodic_halo.hpp"
+#include "propagator/dem_substepper.hpp"
+#include "propagator/pass_timers.hpp"
+#include "propagator/step_params.hpp"
+#include "scene/scene.hpp"
+#include "sph/fluid_particles.hpp"
+#include "sph/pair_accumulator.hpp"
+
+namespace sphdem {
+
+class Simulation {
+ public:
+  explicit Simulation(const Scene& scene);
+
+  // Start-up: fluid steps with the spheres held, velocities damped (physics.md §4).
+  void relax();
+  // One SPH step with DEM sub-cycling; time advances by dt_sph().
+  void step();
+
+  double time() const { return time_; }
+  long step_count() const { return steps_; }
+  double dt_sph() const { return dt_sph_; }
+  double dt_dem() const { return dem_.dt(); }
+  double dt_dem_max() const { return params_.dem.dt_max; }
+  int dem_substeps() const { return dem_.substeps(); }
+  double contact_time() const { return params_.dem.contact_time; }
+  const Scene& scene() const { return scene_; }
+  const StepParams& params() const { return params_; }
+  const TaitEquationOfState& eos() const { return params_.fluid.eos; }
+  // The hydrostatic pressure the variational coupling splits off (coupling.hydrostatic_split;
+  // zero without it).
+  const HydrostaticPressure& hydrostatic_split() const { return params_.fluid.split; }
+  FluidParticles& fluid() { return fluid_; }
+  const FluidParticles& fluid() const { return fluid_; }
+  DemParticles& spheres() { return dem_.spheres(); }
+  const DemParticles& spheres() const { return dem_.spheres(); }
+  const DemSubstepper& dem() const { return dem_; }
+  const PassTimers& timers() const { return timers_; }
+  const ContactLaw& contact_law() const { return params_.dem.law; }
+  // Tangential/rolling contact state (empty for the normal-only law), and its records
+  // keyed by (sphere id, partner id), as a checkpoint would write them.
+  const ContactHistory& contact_history() const { return dem_.contact_history(); }
+  std::vector<ContactHistory::Record> contact_records() const { return dem_.contact_records(); }
+  // The contact neighbour list of the last build (every pair within the skin; analysis).
+  const ContactNeighbourList& contact_list() const { return dem_.contacts(); }
+  // Steps between re-sorting the owned particles into cell order (default 20; tests).
+  void set_sort_interval(int steps) { sort_interval_ = steps; }
+  // Full rebuilds of the fluid's neighbour lists so far (Verlet skin; diagnostics).
+  long neighbour_builds() const { return neighbour_builds_; }
+  // The fluid's half pair list and its Verlet skin (tests).
+  const NeighbourList& fluid_pairs() const { return fluid_pairs_; }
+  double fluid_skin() const { return fluid_skin_; }
+  std::size_t fluid_count() const;  // mobile fluid particles
+  std::size_t wall_count() const;
+  // Counters of the last evaluation (log.csv): voidage values raised to the floor,
+  // Omega terms bounded, and the wall particles' variational pairs on the spheres (N, z).
+  std::size_t voidage_clamped() const { return voidage_clamped_; }
+  std::size_t omega_bounded() const { return omega_bounded_; }
+  double walls_on_spheres_z() const { return walls_on_spheres_z_; }
+
+  // Exposed for tests and benchmarks: rebuild neighbours and recompute every
+  // derived field (voidage, density rate, pressure, theta, interpolation) at the
+  // current positions, without advancing time.
+  void refresh();
+
+ private:
+  void build_initial_state();
+  void advance(bool hold_spheres);
+  void rebuild_neighbours();
+  void update_neighbours();
+  void build_sphere_pairs();
+  bool sphere_pairs_stale() const { return sphere_pairs_built_at_ != dem_.list_builds(); }
+  double fluid_sphere_cutoff() const;
+  void update_smoothing_length();
+  void compute_voidage();
+  void update_pressure();
+  void compute_fluid_side(bool hold_spheres);
+  void apply_variational_pressure(bool hold_spheres);
+  void check_finite() const;
+  double fluid_cutoff() const;
+  void next_dt();
+
+  Scene scene_;
+  StepParams params_;
+  FluidParticles fluid_;
+  DemSubstepper dem_;
+  PeriodicHalo fluid_halo_;
+  CellList fluid_cells_, sphere_cells_;
+  NeighbourList fluid_pairs_;  // fluid-fluid pairs within the cell size, each owned pair once
+  PairAccumulator pair_scratch_;
+  FluidSpherePairs sphere_pairs_;  // fluid-sphere pairs of the step with their kernel values
+  // double smoothing of the big species (3.8-3.10)
+  CellList big_cells_;
+  BigSphereFraction big_fraction_;
+  std::vector<double> big_solid_, big_solid_over_d_;
+  PairAccumulator sphere_scratch_;
+  std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
+  double time_ = 0, dt_sph_ = 0;
+  double cell_size_ = 0;
+  int steps_since_sort_ = 0;
+  int sort_interval_ = 20;
+  // Verlet lists: positions and h_max at the last fluid build, the skin, whether the fluid
+  // lists must be rebuilt before their next use, and the sphere list build the
+  // fluid-sphere pairs index into.
+  std::vector<double> xr_, yr_, zr_;
+  double hmax_at_build_ = 0, fluid_skin_ = 0;
+  bool fluid_lists_stale_ = true;
+  long sphere_pairs_built_at_ = -1;
+  long neighbour_builds_ = 0;
+  long steps_ = 0;
+  std::size_t voidage_clamped_ = 0, omega_bounded_ = 0;
+  double walls_on_spheres_z_ = 0.0;
+  PassTimers timers_;
+};
+
+}  // namespace sphdem

@@ -1,0 +1,69 @@
+#include "propagator/step_params.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "scene/time_step.hpp"
+#include "sph/kernel.hpp"
+
+namespace sphdem {
+
+StepParams compile_step_params(const Scene& scene) {
+  StepParams p;
+  p.box = scene.box;
+  p.gravity = scene.gravity;
+  const bool variational = scene.pressure_coupling == PressureCoupling::kVariational;
+
+  const FluidSpec& fs = scene.fluid;
+  FluidStepParams& f = p.fluid;
+  f.eos = TaitEquationOfState::from_sound_speed(fs.density, fs.sound_speed, fs.gamma);
+  f.smoothing_factor = fs.smoothing_factor;
+  f.spacing = fs.spacing;
+  f.fill_height = scene.fill_height();
+  f.momentum = MomentumParams{fs.viscosity, fs.alpha_artificial, scene.time.cfl};
+  f.kinematic_viscosity = fs.viscosity / fs.density;
+  f.max_dt = scene.time.max_dt_sph;
+  f.relax_steps = scene.startup.relax_steps;
+  f.relax_damping = scene.startup.damping;
+  if (scene.hydrostatic_split)
+    f.split = HydrostaticPressure{f.eos.rho0, scene.gravity[2], f.fill_height};
+
+  CouplingParams& c = p.coupling;
+  c.variational = variational;
+  c.sphere_kernel_scale = scene.sphere_kernel_scale;
+  c.voidage_floor = scene.voidage_floor;
+  c.double_smoothing = scene.double_smoothing.enabled;
+  if (c.double_smoothing) {
+    c.big_h_over_d = scene.double_smoothing.h_over_d;
+    c.is_big_species.assign(scene.species.size(), 0);
+    double d_big = 0.0;
+    for (const auto& name : scene.double_smoothing.big_species) {
+      const int k = scene.species_index(name);
+      c.is_big_species[k] = 1;
+      d_big = std::max(d_big, scene.species[k].d_max());
+    }
+    c.big_cutoff = kernel::kSupport * c.big_h_over_d * d_big;
+  }
+
+  DemStepParams& d = p.dem;
+  const DemTimeStep ts = dem_time_step(scene);
+  d.contact_time = ts.contact_time;
+  d.dt_max = ts.dt_max;
+  try {
+    d.law = make_contact_law(
+        ContactParams{scene.contact.normal, scene.contact.tangential, scene.contact.rolling});
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(fmt::format("{}: key 'contact.rolling': {}", scene.source, e.what()));
+  }
+  d.rotation = contact_law_has_history(d.law);
+  d.skin = scene.contact.skin;
+  d.gravity = scene.gravity;
+  d.drag = scene.drag;
+  d.fluid = drag::Fluid{fs.density, fs.viscosity};
+  d.variational = variational;
+  return p;
+}
+
+}  // namespace sphdem

@@ -1,0 +1,63 @@
+#pragma once
+// The parameters of the passes, compiled once from the scene: the propagator reads
+// these plain structs, never the scene's input schema.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "coupling/drag_laws.hpp"
+#include "dem/contact_registry.hpp"
+#include "domain/box.hpp"
+#include "scene/scene.hpp"
+#include "sph/equation_of_state.hpp"
+#include "sph/hydrostatic_pressure.hpp"
+#include "sph/momentum.hpp"
+
+namespace sphdem {
+
+struct FluidStepParams {
+  TaitEquationOfState eos;         // (2.58-2.59)
+  double smoothing_factor = 1.5;   // sigma of (2.65)
+  double spacing = 0;              // lattice dx of the hydrostatic start
+  double fill_height = 0;          // H of the hydrostatic start
+  MomentumParams momentum;         // mu, alpha, cfl (2.55-2.57, 3.5)
+  double kinematic_viscosity = 0;  // nu = mu / rho_f, the viscous time-step limit
+  double max_dt = 0;               // cap of dt_SPH
+  int relax_steps = 0;             // start-up: fluid steps with the spheres held
+  double relax_damping = 0;        // fraction of the fluid velocity removed per such step
+  HydrostaticPressure split;       // split off by the variational coupling (zero without)
+};
+
+struct CouplingParams {
+  bool variational = false;        // coupling.pressure_coupling
+  double sphere_kernel_scale = 1;  // H / h of the spheres' kernel
+  double voidage_floor = 0.3;
+  bool double_smoothing = false;  // (3.8-3.10)
+  double big_h_over_d = 1.5;
+  std::vector<std::uint8_t> is_big_species;
+  double big_cutoff = 0;  // support of the big species' own kernel (3.9); 0 when off
+};
+
+struct DemStepParams {
+  ContactLaw law;         // normal, tangential and rolling parts (contact_registry.hpp)
+  bool rotation = false;  // tangential or rolling parts: contact history and spin on
+  double skin = 0.3;      // contact Verlet skin / largest diameter
+  double contact_time = 0, dt_max = 0;  // scene/time_step.hpp
+  std::array<double, 3> gravity{};
+  drag::DragLaw drag;
+  drag::Fluid fluid;
+  bool variational = false;  // the pressure force is switched per evaluation, not in fm
+};
+
+struct StepParams {
+  Box box;
+  std::array<double, 3> gravity{};
+  FluidStepParams fluid;
+  CouplingParams coupling;
+  DemStepParams dem;
+};
+
+// Throws SceneError (naming the file and key) for a contact law the solver cannot run.
+StepParams compile_step_params(const Scene& scene);
+
+}  // namespace sphdem
