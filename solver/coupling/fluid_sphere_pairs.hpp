@@ -2,7 +2,7 @@
 // The fluid-sphere pairs: for each owned SPH particle a, the spheres j (owned or halo)
 // within its kernel support, with W(r_aj, H_a) and its gradient factor. A Verlet list
 // (cut-off = support + skin) is built only when the particles have moved too far
-// (run/neighbour_update); every step evaluate() keeps, row by row, the entries within the
+// (Simulation::update_neighbours); every step evaluate() keeps, row by row, the entries within the
 // support with their kernel values. Those are shared by the voidage (2.50), the
 // interpolation at the spheres (2.69, 2.72: the same W, since W_ja(h_a) is the fluid
 // particle's kernel), the reaction (2.71) and the variational pressure coupling, so each

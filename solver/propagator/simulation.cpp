@@ -129,35 +129,68 @@ void Simulation::rebuild_neighbours() {
   build_sphere_pairs();
 }
 
-// Verlet criteria (the lists were built at 2 h_max + skin, the fluid-sphere pairs at
-// 2 H_max + skin with H = scale h):
-//  - fluid pairs: 2 max|x - x_build| + 2 (h_max - h_max,build) <= skin;
-//  - fluid-sphere pairs: max|x - x_build| + max|x_j - x_j,halo| + 2 scale (h_max - h_max,build)
-//    <= skin, with the spheres' displacement since their halo was built;
-// otherwise the lists are rebuilt. Between rebuilds the halo copies are refreshed.
-void Simulation::update_neighbours() {
-  FluidParticles& f = fluid_;
+// Displacements since the builds: max|x - x_build| of the fluid since its lists, and of
+// the fluid and the spheres since the fluid-sphere pairs and since the sphere halo, and
+// the growth 2 (h_max - h_max,build).
+Simulation::Displacements Simulation::displacements() const {
+  const FluidParticles& f = fluid_;
   const DemParticles& s = dem_.spheres();
   const long nf = static_cast<long>(f.n_owned), ns = static_cast<long>(s.n_owned);
-  if (fluid_lists_stale_ || static_cast<long>(xr_.size()) != nf) {
-    rebuild_neighbours();
-    return;
-  }
-  double hmax = 0.0, df2 = 0.0, ds2 = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : hmax, df2)
+  const bool pairs = nf > 0 && xp_.size() == f.n_owned && sxp_.size() == s.n_owned;
+  double hmax = 0.0, df2 = 0.0, dfp2 = 0.0, ds2 = 0.0, dsp2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : hmax, df2, dfp2)
   for (long a = 0; a < nf; ++a) {
     hmax = std::max(hmax, f.h[a]);
     const double dx = f.x[a] - xr_[a], dy = f.y[a] - yr_[a], dz = f.z[a] - zr_[a];
     df2 = std::max(df2, dx * dx + dy * dy + dz * dz);
+    if (!pairs) continue;
+    const double px = f.x[a] - xp_[a], py = f.y[a] - yp_[a], pz = f.z[a] - zp_[a];
+    dfp2 = std::max(dfp2, px * px + py * py + pz * pz);
   }
-#pragma omp parallel for schedule(static) reduction(max : ds2) if (ns > kMinParallelSpheres)
+#pragma omp parallel for schedule(static) reduction(max : ds2, dsp2) if (ns > kMinParallelSpheres)
   for (long j = 0; j < ns; ++j) {
     const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
     ds2 = std::max(ds2, dx * dx + dy * dy + dz * dz);
+    if (!pairs) continue;
+    const double px = s.x[j] - sxp_[j], py = s.y[j] - syp_[j], pz = s.z[j] - szp_[j];
+    dsp2 = std::max(dsp2, px * px + py * py + pz * pz);
   }
-  const double growth = kernel::kSupport * std::max(0.0, hmax - hmax_at_build_);
-  const double df = std::sqrt(df2), ds = std::sqrt(ds2);
-  if (2.0 * df + growth > fluid_skin_) {
+  return {std::sqrt(df2), std::sqrt(ds2), std::sqrt(dfp2), std::sqrt(dsp2),
+          kernel::kSupport * std::max(0.0, hmax - hmax_at_build_)};
+}
+
+// Verlet criteria (the lists were built at 2 h_max + skin, the fluid-sphere pairs at
+// 2 H_max + skin with H = scale h):
+//  - fluid pairs: 2 max|x - x_build| + 2 (h_max - h_max,build) <= skin;
+//  - fluid-sphere pairs: the displacements of both sides since the pairs were built, and
+//    since the fluid and sphere halos were built (a pair with an image outside the halo),
+//    plus 2 scale (h_max - h_max,build), <= skin;
+// a negative margin: the lists are rebuilt at their next use.
+Simulation::VerletMargins Simulation::verlet_margins(const Displacements& d) const {
+  VerletMargins m;
+  m.fluid = fluid_skin_ - (2.0 * d.fluid + d.growth);
+  const double moved = std::max(d.fluid + d.sphere, d.fluid_since_pairs + d.sphere_since_pairs);
+  m.sphere = sphere_pairs_stale()
+                 ? -1.0
+                 : fluid_skin_ - (moved + params_.coupling.sphere_kernel_scale * d.growth);
+  return m;
+}
+
+Simulation::VerletMargins Simulation::verlet_margins() const {
+  if (fluid_lists_stale_ || xr_.size() != fluid_.n_owned) return {-1.0, -1.0};
+  return verlet_margins(displacements());
+}
+
+// The lists are rebuilt where their margin is used up; otherwise the halo copies are
+// refreshed.
+void Simulation::update_neighbours() {
+  FluidParticles& f = fluid_;
+  if (fluid_lists_stale_ || xr_.size() != f.n_owned) {
+    rebuild_neighbours();
+    return;
+  }
+  const VerletMargins margin = verlet_margins(displacements());
+  if (margin.fluid < 0) {
     rebuild_neighbours();
     return;
   }
@@ -165,8 +198,7 @@ void Simulation::update_neighbours() {
   for (auto* v : {&f.vx, &f.vy, &f.vz, &f.h, &f.inv_h, &f.rho}) fluid_halo_.fill(*v);
   if (params_.coupling.double_smoothing)  // its re-smoothing walks the fluid's cells (3.10)
     fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
-  if (nf > 0 && !sphere_pairs_stale() &&
-      df + ds + params_.coupling.sphere_kernel_scale * growth > fluid_skin_)
+  if (f.n_owned > 0 && !sphere_pairs_stale() && margin.sphere < 0)
     dem_.rebuild_lists();  // a new sphere halo, so that it covers the new pairs
   if (sphere_pairs_stale()) build_sphere_pairs();
 }
@@ -176,6 +208,13 @@ void Simulation::build_sphere_pairs() {
   const DemParticles& s = dem_.spheres();
   sphere_pairs_built_at_ = dem_.list_builds();
   if (fluid_.n_owned == 0) return;  // dry DEM
+  const std::size_t nf = fluid_.n_owned;
+  xp_.assign(fluid_.x.begin(), fluid_.x.begin() + nf);
+  yp_.assign(fluid_.y.begin(), fluid_.y.begin() + nf);
+  zp_.assign(fluid_.z.begin(), fluid_.z.begin() + nf);
+  sxp_.assign(s.x.begin(), s.x.begin() + s.n_owned);
+  syp_.assign(s.y.begin(), s.y.begin() + s.n_owned);
+  szp_.assign(s.z.begin(), s.z.begin() + s.n_owned);
   const double cut = fluid_sphere_cutoff();
   sphere_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cut, 2);
   sphere_pairs_.build_list(fluid_, sphere_cells_, params_.coupling.sphere_kernel_scale, cut);

@@ -61,7 +61,15 @@ class Simulation {
   long neighbour_builds() const { return neighbour_builds_; }
   // The fluid's half pair list and its Verlet skin (tests).
   const NeighbourList& fluid_pairs() const { return fluid_pairs_; }
+  const FluidSpherePairs& sphere_pairs() const { return sphere_pairs_; }
   double fluid_skin() const { return fluid_skin_; }
+  // Skin left (m) of the fluid and the fluid-sphere lists at the current positions: where
+  // it is >= 0 the list holds every pair within the kernel support; a negative margin
+  // (or a stale list) means the next use rebuilds it.
+  struct VerletMargins {
+    double fluid = -1, sphere = -1;
+  };
+  VerletMargins verlet_margins() const;
   std::size_t fluid_count() const;  // mobile fluid particles
   std::size_t wall_count() const;
   // Counters of the last evaluation (log.csv): voidage values raised to the floor,
@@ -80,6 +88,13 @@ class Simulation {
   void advance(bool hold_spheres);
   void rebuild_neighbours();
   void update_neighbours();
+  struct Displacements {
+    double fluid = 0, sphere = 0;                          // since the fluid lists / sphere halo
+    double fluid_since_pairs = 0, sphere_since_pairs = 0;  // since the fluid-sphere pairs
+    double growth = 0;                                     // 2 (h_max - h_max,build)
+  };
+  Displacements displacements() const;
+  VerletMargins verlet_margins(const Displacements& d) const;
   void build_sphere_pairs();
   bool sphere_pairs_stale() const { return sphere_pairs_built_at_ != dem_.list_builds(); }
   double fluid_sphere_cutoff() const;
@@ -115,6 +130,7 @@ class Simulation {
   // lists must be rebuilt before their next use, and the sphere list build the
   // fluid-sphere pairs index into.
   std::vector<double> xr_, yr_, zr_;
+  std::vector<double> xp_, yp_, zp_, sxp_, syp_, szp_;  // fluid and spheres at the pairs' build
   double hmax_at_build_ = 0, fluid_skin_ = 0;
   bool fluid_lists_stale_ = true;
   long sphere_pairs_built_at_ = -1;
