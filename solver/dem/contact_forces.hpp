@@ -3,33 +3,22 @@
 #include <vector>
 
 #include "dem/contact_history.hpp"
+#include "dem/contact_list.hpp"
 #include "dem/contact_model.hpp"
 #include "dem/contact_registry.hpp"
+#include "dem/contact_rows.hpp"
 #include "dem/dem_particles.hpp"
-#include "domain/cell_list.hpp"
-#include "domain/compressed_rows.hpp"
 #include "domain/periodic_halo.hpp"
 
 namespace sphdem {
 
-// Verlet list for sphere contacts: for each owned sphere, every sphere (owned or
-// halo) within r_i + r_j + skin. A full list: each owned sphere sums the forces on
-// itself only, so threads never write to the same sphere; the pair force is written
-// antisymmetrically, so action and reaction cancel exactly.
-struct ContactNeighbourList {
-  std::vector<std::uint32_t> offset, neighbour;
-  double skin = 0.0;
-  void build(const DemParticles& s, const CellList& cells, double skin);
-
- private:
-  CompressedRowBuilder rows_;
-};
-
 // Contact force (cx,cy,cz) on every owned sphere from the linear spring-dashpot
 // (2.36) with other spheres and with the flat bottom wall at z = wall_z.
-// Records each sphere's largest overlap in overlap_max.
+// Records each sphere's largest overlap in overlap_max. Halo neighbours are read through
+// their owned source (`images`), so the passes between two list builds need no halo fill.
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
-                            const LinearSpringDashpot& law, double wall_z);
+                            const LinearSpringDashpot& law, const HaloImages& images,
+                            double wall_z);
 
 // Contact force and torque with tangential and rolling parts (a registered ContactModel
 // with kHistory, contact_registry.hpp) on every owned sphere: writes (cx,cy,cz),

@@ -27,6 +27,27 @@ struct HaloImages {
   const double* shift_z = nullptr;
 };
 
+// The owned particle that neighbour j stands for (j itself if owned, else its source) and
+// the separation x_i - x_j, across a periodic face as (x_i - x_source) - shift. A pass
+// that reads its neighbours' fields through the returned index needs no halo fill.
+template <class Field>
+inline std::size_t owned_image(const HaloImages& im, std::size_t j, double xi, double yi, double zi,
+                               const Field& x, const Field& y, const Field& z, double& dx,
+                               double& dy, double& dz) {
+  if (j < im.n_owned) {
+    dx = xi - x[j];
+    dy = yi - y[j];
+    dz = zi - z[j];
+    return j;
+  }
+  const std::size_t g = j - im.n_owned;
+  const std::size_t h = im.source[g];
+  dx = (xi - x[h]) - im.shift_x[g];
+  dy = (yi - y[h]) - im.shift_y[g];
+  dz = (zi - z[h]) - im.shift_z[g];
+  return h;
+}
+
 class PeriodicHalo {
  public:
   // Below this many copies a fill runs on one thread (a parallel region costs more).

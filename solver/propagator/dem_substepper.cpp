@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <type_traits>
 #include <variant>
 
 #include "coupling/fluid_force.hpp"
 #include "domain/reorder.hpp"
+#include "domain/row_partition.hpp"
 
 namespace sphdem {
 
@@ -134,38 +137,68 @@ void DemSubstepper::switch_pressure_force() {
   }
 }
 
+namespace {
+struct NoFluid {};  // a dry scene: no fluid force to evaluate
+}  // namespace
+
+// One pass over the owned spheres: each one's contact row (2.36), its fluid force (2.68)
+// and its acceleration (2.35), so that a sub-step streams the sphere arrays once.
+template <class Contact, class Drag>
+void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean,
+                               double weight, double dt_springs) {
+  DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
+  if constexpr (Contact::kHistory)
+    if (history_.pair.size() != contacts_.neighbour.size() || history_.wall.size() != s.n_owned)
+      throw std::logic_error("DemSubstepper: the contact history is not loaded for this list");
+  const double bf = contact.normal.beta_factor();
+  const HaloImages images = halo_.images();
+  const bool variational = p_.variational;
+  const auto& g = p_.gravity;
+  const drag::Fluid& fluid = p_.fluid;
+#pragma omp parallel if (n > kMinParallelSpheres)
+  for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j) {
+    const ContactRow c =
+        contact_row(s, contacts_, contact, bf, history_, images, 0.0, dt_springs, j);
+    store_contact_row<Contact>(s, j, c);
+    double fx = 0, fy = 0, fz = 0;
+    if constexpr (!std::is_same_v<Drag, NoFluid>) {
+      fluid_force_on_sphere(s, j, drag, fluid, fx, fy, fz);
+      if (accumulate_mean) {  // trapezoidal impulse of this sub-step: 0.5 dt (f_old + f_new)
+        // (with the variational coupling the constant pressure part 2 V g is not in it)
+        const double vp2 = variational ? 2.0 * s.volume(j) : 0.0;
+        s.fmx[j] += weight * (s.fx[j] + fx - vp2 * s.gx[j]);
+        s.fmy[j] += weight * (s.fy[j] + fy - vp2 * s.gy[j]);
+        s.fmz[j] += weight * (s.fz[j] + fz - vp2 * s.gz[j]);
+      }
+      s.fx[j] = fx;
+      s.fy[j] = fy;
+      s.fz[j] = fz;
+    }
+    const double inv_m = 1.0 / s.mass[j];
+    s.ax[j] = (c.fx + fx) * inv_m + g[0];
+    s.ay[j] = (c.fy + fy) * inv_m + g[1];
+    s.az[j] = (c.fz + fz) * inv_m + g[2];
+  }
+}
+
 // Rigid groups share their total force equally (thesis §4.5).
 void DemSubstepper::forces(bool accumulate_mean, double weight, double dt_springs) {
   DemParticles& s = s_;
   if (s.n_owned == 0) return;
-  compute_contact_forces(s, contacts_, p_.law, history_, halo_.images(), 0.0, dt_springs);
   const long n = static_cast<long>(s.n_owned);
-  const bool variational = p_.variational;
-  const auto& g = p_.gravity;
-  const drag::Fluid& fluid = p_.fluid;
   std::visit(
-      [&](const auto& law) {
-#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
-        for (long j = 0; j < n; ++j) {
-          double fx, fy, fz;
-          fluid_force_on_sphere(s, j, law, fluid, fx, fy, fz);
-          if (accumulate_mean) {  // trapezoidal impulse of this sub-step: 0.5 dt (f_old + f_new)
-            // (with the variational coupling the constant pressure part 2 V g is not in it)
-            const double vp2 = variational ? 2.0 * s.volume(j) : 0.0;
-            s.fmx[j] += weight * (s.fx[j] + fx - vp2 * s.gx[j]);
-            s.fmy[j] += weight * (s.fy[j] + fy - vp2 * s.gy[j]);
-            s.fmz[j] += weight * (s.fz[j] + fz - vp2 * s.gz[j]);
-          }
-          s.fx[j] = fx;
-          s.fy[j] = fy;
-          s.fz[j] = fz;
-          const double inv_m = 1.0 / s.mass[j];
-          s.ax[j] = (s.cx[j] + fx) * inv_m + g[0];
-          s.ay[j] = (s.cy[j] + fy) * inv_m + g[1];
-          s.az[j] = (s.cz[j] + fz) * inv_m + g[2];
-        }
+      [&](const auto& contact) {
+        if (!p_.fluid_force)
+          force_rows(contact, NoFluid{}, accumulate_mean, weight, dt_springs);
+        else
+          std::visit(
+              [&](const auto& drag) {
+                force_rows(contact, drag, accumulate_mean, weight, dt_springs);
+              },
+              p_.drag);
       },
-      p_.drag);
+      p_.law);
   if (n_groups_ == 0) return;
   sum_over_rigid_groups([&](long j, double& fx, double& fy, double& fz) {
     fx = s.ax[j] * s.mass[j];
@@ -201,8 +234,8 @@ void DemSubstepper::half_step(double dt, bool first_half) {
   for (int k = 0; k < per_half; ++k) {
     double max_disp2 = 0.0;
     const double finish = k > 0 ? 0.5 * h : 0.0;  // the previous sub-step's corrector, fused
-#pragma omp parallel for schedule(static) reduction(max : max_disp2) if (n > kMinParallelSpheres)
-    for (long j = 0; j < n; ++j) {
+#pragma omp parallel reduction(max : max_disp2) if (n > kMinParallelSpheres)
+    for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j) {
       // v_n + h (a_old + a_new)/2 of the sub-step before (below for the last one)
       s.vx[j] += finish * (s.ax[j] - a_old_x_[j]);
       s.vy[j] += finish * (s.ay[j] - a_old_y_[j]);
@@ -226,23 +259,23 @@ void DemSubstepper::half_step(double dt, bool first_half) {
       if (k > 0) correct_spin(s, h, torque_old_);
       predict_spin(s, h, torque_old_);
     }
-    if (max_disp2 > half_skin * half_skin) {
-      rebuild_lists();
-    } else {
-      halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
-      for (auto* v : {&s.vx, &s.vy, &s.vz}) halo_.fill(*v);
-      if (p_.rotation)
-        for (auto* v : {&s.wx, &s.wy, &s.wz}) halo_.fill(*v);
-    }
+    // (the contact passes read halo neighbours through their owned source: no fill here)
+    if (max_disp2 > half_skin * half_skin) rebuild_lists();
     forces(true, 0.5 * h / dt, h);
   }
-#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
-  for (long j = 0; j < n; ++j) {  // the last sub-step's v_n + h (a_old + a_new)/2
+#pragma omp parallel if (n > kMinParallelSpheres)
+  for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j) {
+    // the last sub-step's v_n + h (a_old + a_new)/2
     s.vx[j] += 0.5 * h * (s.ax[j] - a_old_x_[j]);
     s.vy[j] += 0.5 * h * (s.ay[j] - a_old_y_[j]);
     s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[j]);
   }
   if (p_.rotation) correct_spin(s, h, torque_old_);
+  // the halo copies as the fluid passes read them
+  halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
+  for (auto* v : {&s.vx, &s.vy, &s.vz}) halo_.fill(*v);
+  if (p_.rotation)
+    for (auto* v : {&s.wx, &s.wy, &s.wz}) halo_.fill(*v);
 }
 
 }  // namespace sphdem

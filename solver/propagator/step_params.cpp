@@ -60,6 +60,7 @@ StepParams compile_step_params(const Scene& scene) {
   d.rotation = contact_law_has_history(d.law);
   d.skin = scene.contact.skin;
   d.gravity = scene.gravity;
+  d.fluid_force = scene.fluid.enabled;
   d.drag = scene.drag;
   d.fluid = drag::Fluid{fs.density, fs.viscosity};
   d.variational = variational;

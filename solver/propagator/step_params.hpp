@@ -44,6 +44,7 @@ struct DemStepParams {
   double skin = 0.3;      // contact Verlet skin / largest diameter
   double contact_time = 0, dt_max = 0;  // scene/time_step.hpp
   std::array<double, 3> gravity{};
+  bool fluid_force = true;  // false: dry DEM, no fluid and so no fluid force
   drag::DragLaw drag;
   drag::Fluid fluid;
   bool variational = false;  // the pressure force is switched per evaluation, not in fm

@@ -104,7 +104,7 @@ Measured collide(DemParticles& s, const LinearSpringDashpot& law, double wall_z,
     }
   };
   Measured m;
-  compute_contact_forces(s, list, law, wall_z);
+  compute_contact_forces(s, list, law, HaloImages{s.n_owned}, wall_z);
   double t = 0, prev = overlap(s), t_release = -1;
   for (int step = 0; step < 100000 && t_release < 0; ++step) {
     kick(0.5 * dt);
@@ -117,7 +117,7 @@ Measured collide(DemParticles& s, const LinearSpringDashpot& law, double wall_z,
     // lambda = 1); with the half-step velocity alone the error would be first order, ~eta dt/2
     const std::vector<double> vx = s.vx, vy = s.vy, vz = s.vz;
     kick(0.5 * dt);
-    compute_contact_forces(s, list, law, wall_z);
+    compute_contact_forces(s, list, law, HaloImages{s.n_owned}, wall_z);
     s.vx = vx, s.vy = vy, s.vz = vz;
     kick(0.5 * dt);
     t += dt;
@@ -319,7 +319,7 @@ TEST(ContactForces, ActionReactionIsExact) {
   for (std::size_t i = 0; i < s.n_owned; ++i) ASSERT_EQ(list.offset[i + 1] - list.offset[i], 1u) << i;
 
   for (const LinearSpringDashpot& law : {dashpot(kBeta), restitution(0.7), restitution(0.7, true)}) {
-    compute_contact_forces(s, list, law, 0.0);
+    compute_contact_forces(s, list, law, HaloImages{s.n_owned}, 0.0);
     std::size_t nonzero = 0;
     for (std::size_t p = 0; p < n_pairs; ++p) {
       const std::size_t i = 2 * p, j = i + 1;
