@@ -17,6 +17,9 @@
 
 namespace sphdem {
 
+// The cost of a fluid row in a pass over these pairs, in entries (domain/row_partition.hpp).
+constexpr double kFluidRowCost = 8.0;
+
 struct FluidSpherePairs {
   NeighbourList list;  // Verlet list: rows owned SPH particles, entries sphere indices
   std::vector<std::uint32_t> count;   // per row: entries within the support (stored first)

@@ -1,11 +1,14 @@
 #include "coupling/reaction.hpp"
 
+#include "domain/row_partition.hpp"
+
 namespace sphdem {
 
 void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs) {
   const long n = static_cast<long>(f.n_owned);
-#pragma omp parallel for schedule(dynamic, 64)  // rows differ in length
-  for (long a = 0; a < n; ++a) {
+  // rows differ in length: contiguous shares of equal entries (domain/row_partition.hpp)
+#pragma omp parallel
+  for (auto [a, end] = thread_rows(pairs.list.offset, n, kFluidRowCost); a < end; ++a) {
     if (f.kind[a] != kFluid) continue;
     double rx = 0, ry = 0, rz = 0;
     for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {

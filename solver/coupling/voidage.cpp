@@ -1,13 +1,16 @@
 #include "coupling/voidage.hpp"
 
+#include "domain/row_partition.hpp"
+
 namespace sphdem {
 
 std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
                                   double eps_floor, const BigSpheresSmoothedApart* big) {
   const long n = static_cast<long>(f.n_owned);
   std::size_t clamped = 0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : clamped)  // rows differ in length
-  for (long a = 0; a < n; ++a) {
+  // rows differ in length: contiguous shares of equal entries (domain/row_partition.hpp)
+#pragma omp parallel reduction(+ : clamped)
+  for (auto [a, end] = thread_rows(pairs.list.offset, n, kFluidRowCost); a < end; ++a) {
     double solid = 0.0, solid_over_d = 0.0;
     for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {
       const std::uint32_t j = pairs.sphere[k];
