@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "domain/row_partition.hpp"
 #include "sph/kernel.hpp"
 
 namespace sphdem {
@@ -19,8 +20,9 @@ void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_c
 void FluidSpherePairs::evaluate(const FluidParticles& f, const DemParticles& s,
                                 bool with_gradient) {
   const long n = static_cast<long>(f.n_owned);
-#pragma omp parallel for schedule(dynamic, 64)  // rows differ: a bed, clear fluid
-  for (long a = 0; a < n; ++a) {
+  // rows differ (a bed, clear fluid): contiguous shares of equal entries
+#pragma omp parallel
+  for (auto [a, end] = thread_rows(list.offset, n, kFluidRowCost); a < end; ++a) {
     const double inv_h = inv_kernel_h(f, a), reach = kernel::kSupport / inv_h,
                  reach2 = reach * reach;
     const double xa = f.x[a], ya = f.y[a], za = f.z[a];
