@@ -4,7 +4,8 @@
 
 namespace sphdem {
 
-void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs) {
+void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s,
+                           const FluidSpherePairs& pairs) {
   const long n = static_cast<long>(f.n_owned);
   // rows differ in length: contiguous shares of equal entries (domain/row_partition.hpp)
 #pragma omp parallel

@@ -4,8 +4,9 @@
 
 namespace sphdem {
 
-std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
-                                  double eps_floor, const BigSpheresSmoothedApart* big) {
+std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s,
+                                  const FluidSpherePairs& pairs, double eps_floor,
+                                  const BigSpheresSmoothedApart* big) {
   const long n = static_cast<long>(f.n_owned);
   std::size_t clamped = 0;
   // rows differ in length: contiguous shares of equal entries (domain/row_partition.hpp)

@@ -34,11 +34,13 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
 // `images` describes the halo copies among the neighbours (empty if there are none).
 template <class Model>
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, const Model& model,
-                            ContactHistory& history, const HaloImages& images, double wall_z, double dt);
+                            ContactHistory& history, const HaloImages& images, double wall_z,
+                            double dt);
 
 // Any registered law; the normal-only one goes to the history-free pass above (the
 // history, the images and dt are then unused, and the torques left untouched).
-void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, const ContactLaw& law,
-                            ContactHistory& history, const HaloImages& images, double wall_z, double dt);
+void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
+                            const ContactLaw& law, ContactHistory& history,
+                            const HaloImages& images, double wall_z, double dt);
 
 }  // namespace sphdem

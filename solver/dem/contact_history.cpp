@@ -1,6 +1,7 @@
 #include "dem/contact_history.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "dem/contact_forces.hpp"
 
@@ -12,8 +13,8 @@ bool key_less(const ContactHistory::Record& a, const ContactHistory::Record& b) 
 }
 }  // namespace
 
-std::vector<ContactHistory::Record> ContactHistory::records(const DemParticles& s,
-                                                             const ContactNeighbourList& list) const {
+std::vector<ContactHistory::Record> ContactHistory::records(
+    const DemParticles& s, const ContactNeighbourList& list) const {
   if (!loaded_) return keyed_;
   const long n = static_cast<long>(s.n_owned);
   std::vector<std::size_t> first(n + 1, 0);
@@ -42,6 +43,11 @@ void ContactHistory::save(const DemParticles& s, const ContactNeighbourList& lis
   loaded_ = false;
   pair.clear();
   wall.clear();
+}
+
+void ContactHistory::require_aligned(const ContactNeighbourList& list, std::size_t n_owned) const {
+  if (pair.size() != list.neighbour.size() || wall.size() != n_owned)
+    throw std::logic_error("contact pass: the contact history is not loaded for this list");
 }
 
 void ContactHistory::load(const DemParticles& s, const ContactNeighbourList& list) {

@@ -35,7 +35,8 @@ struct ContactState {
   double xi[3] = {0, 0, 0};  // elastic tangential displacement (m)
   double mr[3] = {0, 0, 0};  // rolling spring torque on the lower-id sphere (N m)
   bool active() const {
-    return xi[0] != 0.0 || xi[1] != 0.0 || xi[2] != 0.0 || mr[0] != 0.0 || mr[1] != 0.0 || mr[2] != 0.0;
+    return xi[0] != 0.0 || xi[1] != 0.0 || xi[2] != 0.0 || mr[0] != 0.0 || mr[1] != 0.0 ||
+           mr[2] != 0.0;
   }
 };
 
@@ -60,6 +61,9 @@ class ContactHistory {
   // Records whose partner is not in the new list are dropped (no longer in contact).
   void load(const DemParticles& s, const ContactNeighbourList& list);
   bool loaded() const { return loaded_; }
+  // Throws std::logic_error unless the working copy is aligned with `list` over n_owned
+  // spheres (a contact pass with history needs it).
+  void require_aligned(const ContactNeighbourList& list, std::size_t n_owned) const;
 
   // The store; current after save(), empty after load().
   const std::vector<Record>& keyed() const { return keyed_; }

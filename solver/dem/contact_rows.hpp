@@ -18,6 +18,9 @@
 
 namespace sphdem {
 
+// A sphere's own share of the cost of its row, in list entries (domain/row_partition.hpp).
+constexpr double kContactRowCost = 4.0;
+
 struct ContactRow {
   double fx = 0, fy = 0, fz = 0;  // force on the sphere
   double qx = 0, qy = 0, qz = 0;  // torque (tangential and rolling parts)

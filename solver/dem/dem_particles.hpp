@@ -6,6 +6,10 @@
 
 namespace sphdem {
 
+// Below this many spheres the sphere loops run on one thread: a parallel region costs
+// more than the work (a single settling sphere takes ~10^5 sub-steps).
+constexpr long kMinParallelSpheres = 256;
+
 struct DemParticles {
   // state that defines the run (checkpointed)
   std::vector<double> x, y, z;     // centre (m)
@@ -38,20 +42,54 @@ struct DemParticles {
   // Every per-particle array with its name (output, checkpoint, resizing, reordering).
   template <class F>
   void for_each_field(F&& f) {
-    f("species", species); f("rigid_group", rigid_group); f("id", id);
-    f("x", x); f("y", y); f("z", z); f("vx", vx); f("vy", vy); f("vz", vz);
-    f("wx", wx); f("wy", wy); f("wz", wz);
-    f("radius", radius); f("mass", mass); f("shepard", shepard); f("eps", eps); f("d_sauter", d_sauter);
-    f("ufx", ufx); f("ufy", ufy); f("ufz", ufz); f("gx", gx); f("gy", gy); f("gz", gz);
-    f("fx", fx); f("fy", fy); f("fz", fz); f("fmx", fmx); f("fmy", fmy); f("fmz", fmz);
-    f("cx", cx); f("cy", cy); f("cz", cz); f("tx", tx); f("ty", ty); f("tz", tz);
-    f("ax", ax); f("ay", ay); f("az", az);
-    f("x0", x0); f("y0", y0); f("z0", z0); f("overlap_max", overlap_max);
+    f("species", species);
+    f("rigid_group", rigid_group);
+    f("id", id);
+    f("x", x);
+    f("y", y);
+    f("z", z);
+    f("vx", vx);
+    f("vy", vy);
+    f("vz", vz);
+    f("wx", wx);
+    f("wy", wy);
+    f("wz", wz);
+    f("radius", radius);
+    f("mass", mass);
+    f("shepard", shepard);
+    f("eps", eps);
+    f("d_sauter", d_sauter);
+    f("ufx", ufx);
+    f("ufy", ufy);
+    f("ufz", ufz);
+    f("gx", gx);
+    f("gy", gy);
+    f("gz", gz);
+    f("fx", fx);
+    f("fy", fy);
+    f("fz", fz);
+    f("fmx", fmx);
+    f("fmy", fmy);
+    f("fmz", fmz);
+    f("cx", cx);
+    f("cy", cy);
+    f("cz", cz);
+    f("tx", tx);
+    f("ty", ty);
+    f("tz", tz);
+    f("ax", ax);
+    f("ay", ay);
+    f("az", az);
+    f("x0", x0);
+    f("y0", y0);
+    f("z0", z0);
+    f("overlap_max", overlap_max);
   }
   void resize(std::size_t n) {
     const std::size_t old = rigid_group.size();
     for_each_field([n](const char*, auto& v) { v.resize(n); });
-    for (std::size_t i = old; i < n; ++i) rigid_group[i] = -1;  // new spheres belong to no rigid group
+    for (std::size_t i = old; i < n; ++i)
+      rigid_group[i] = -1;  // new spheres belong to no rigid group
   }
   double volume(std::size_t i) const {
     return 4.0 / 3.0 * 3.14159265358979323846 * radius[i] * radius[i] * radius[i];

@@ -13,12 +13,9 @@
 
 namespace sphdem {
 
-// Below this many spheres a parallel region costs more than the loop (as in Simulation).
-constexpr long kMinParallelSpinSpheres = 256;
-
 inline void kick_spin(DemParticles& s, double h) {
   const long n = static_cast<long>(s.n_owned);
-#pragma omp parallel for schedule(static) if (n > kMinParallelSpinSpheres)
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
   for (long j = 0; j < n; ++j) {
     if (s.rigid_group[j] >= 0) continue;
     const double c = h / s.inertia(j);
@@ -37,7 +34,7 @@ inline void predict_spin(DemParticles& s, double h, OldTorque& old) {
   old.x.resize(n);
   old.y.resize(n);
   old.z.resize(n);
-#pragma omp parallel for schedule(static) if (n > kMinParallelSpinSpheres)
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
   for (long j = 0; j < n; ++j) {
     old.x[j] = s.tx[j];
     old.y[j] = s.ty[j];
@@ -52,7 +49,7 @@ inline void predict_spin(DemParticles& s, double h, OldTorque& old) {
 
 inline void correct_spin(DemParticles& s, double h, const OldTorque& old) {
   const long n = static_cast<long>(s.n_owned);
-#pragma omp parallel for schedule(static) if (n > kMinParallelSpinSpheres)
+#pragma omp parallel for schedule(static) if (n > kMinParallelSpheres)
   for (long j = 0; j < n; ++j) {
     if (s.rigid_group[j] >= 0) continue;
     const double c = 0.5 * h / s.inertia(j);

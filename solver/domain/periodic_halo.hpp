@@ -77,8 +77,12 @@ class PeriodicHalo {
   void fill(Vec& field) const {
     fill(field.data());
   }
-  const std::vector<std::uint32_t>& source() const { return source_; }
-  HaloImages images() const { return {n_owned_, source_.data(), sx_.data(), sy_.data(), sz_.data()}; }
+  const std::vector<std::uint32_t>& source() const {
+    return source_;
+  }
+  HaloImages images() const {
+    return {n_owned_, source_.data(), sx_.data(), sy_.data(), sz_.data()};
+  }
 
  private:
   std::size_t n_owned_ = 0;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <type_traits>
 #include <variant>
 
@@ -148,9 +147,7 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
                                double weight, double dt_springs) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
-  if constexpr (Contact::kHistory)
-    if (history_.pair.size() != contacts_.neighbour.size() || history_.wall.size() != s.n_owned)
-      throw std::logic_error("DemSubstepper: the contact history is not loaded for this list");
+  if constexpr (Contact::kHistory) history_.require_aligned(contacts_, s.n_owned);
   const double bf = contact.normal.beta_factor();
   const HaloImages images = halo_.images();
   const bool variational = p_.variational;

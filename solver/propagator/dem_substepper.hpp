@@ -17,10 +17,6 @@
 
 namespace sphdem {
 
-// Below this many spheres the sphere loops run on one thread: a parallel region costs
-// more than the work (a single settling sphere takes ~10^5 sub-steps).
-constexpr long kMinParallelSpheres = 256;
-
 // How far the fluid side reaches into the sphere halo: `needed` and `wanted` (with the
 // fluid's Verlet skin) from the fluid particles, `sphere_kernel` a kernel centred on the
 // spheres (double smoothing's big spheres, 3.9), which the contact skin extends.
@@ -69,7 +65,8 @@ class DemSubstepper {
   void sum_over_rigid_groups(Force force);
   // The cost of a sphere in its force pass, in contact-list entries: each thread takes
   // the spheres of one equal share (domain/row_partition.hpp) in every pass of a sub-step.
-  double row_cost() const { return p_.fluid_force ? 16.0 : 4.0; }
+  double row_cost() const { return kContactRowCost + (p_.fluid_force ? kDragRowCost : 0.0); }
+  static constexpr double kDragRowCost = 12.0;  // a drag law's evaluation, in list entries
   template <class Contact, class Drag>
   void force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean, double weight,
                   double dt_springs);

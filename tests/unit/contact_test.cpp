@@ -32,18 +32,20 @@ constexpr double kSkin = 0.3 * kD;
 struct Oscillator {
   double omega0, eta, omega;
   Oscillator(double k, double beta, double m12)
-      : omega0(std::sqrt(k / m12)), eta(beta / (2.0 * m12)), omega(std::sqrt(k / m12 - eta * eta)) {}
+      : omega0(std::sqrt(k / m12)),
+        eta(beta / (2.0 * m12)),
+        omega(std::sqrt(k / m12 - eta * eta)) {}
   double contact_time() const { return kPi / omega; }  // delta returns to 0 at omega t = pi
-  double restitution() const {                          // -delta'(t_c)/v = e^(-eta pi/omega)
+  double restitution() const {                         // -delta'(t_c)/v = e^(-eta pi/omega)
     return std::exp(-eta * contact_time());
   }
   double max_overlap(double v) const {  // delta' = 0 at tan(omega t) = omega/eta
     const double t = std::atan2(omega, eta) / omega;
     return v / omega * std::exp(-eta * t) * std::sin(omega * t);
   }
-  // With the force clipped at 0 (never attractive), the contact ends when k delta + beta delta' = 0,
-  // i.e. delta'' = 0, at omega t = pi - phi with tan(phi) = 2 eta omega/(omega^2 - eta^2);
-  // from then on the spheres fly apart at -delta'(t).
+  // With the force clipped at 0 (never attractive), the contact ends when k delta + beta delta' =
+  // 0, i.e. delta'' = 0, at omega t = pi - phi with tan(phi) = 2 eta omega/(omega^2 - eta^2); from
+  // then on the spheres fly apart at -delta'(t).
   double clipped_restitution() const {
     const double phi = std::atan2(2.0 * eta * omega, omega * omega - eta * eta);
     const double t = (kPi - phi) / omega;
@@ -87,8 +89,8 @@ struct Measured {
 // Integrates until the overlap ends. `overlap(s)` and `normal_force(s)` (positive =
 // repulsive) define the geometry; the spheres start apart and close at speed v_rel.
 template <class Overlap, class NormalForce>
-Measured collide(DemParticles& s, const LinearSpringDashpot& law, double wall_z, double dt, double v_rel,
-                 Overlap overlap, NormalForce normal_force) {
+Measured collide(DemParticles& s, const LinearSpringDashpot& law, double wall_z, double dt,
+                 double v_rel, Overlap overlap, NormalForce normal_force) {
   const SerialOpenMP serial;
   CellList cells;
   cells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), 2.0 * kR + kSkin);
@@ -122,7 +124,8 @@ Measured collide(DemParticles& s, const LinearSpringDashpot& law, double wall_z,
     kick(0.5 * dt);
     t += dt;
     const double now = overlap(s);
-    m.max_overlap = std::max(m.max_overlap, *std::max_element(s.overlap_max.begin(), s.overlap_max.end()));
+    m.max_overlap =
+        std::max(m.max_overlap, *std::max_element(s.overlap_max.begin(), s.overlap_max.end()));
     m.max_pull = std::max(m.max_pull, -normal_force(s));
     if (prev > 0 && now <= 0) t_release = t - dt * now / (now - prev);  // linear zero crossing
     prev = now;
@@ -189,8 +192,9 @@ void expect_matches(const Measured& m, double beta, double m12, double v_rel) {
   EXPECT_NEAR(cf.restitution(), osc.restitution(), 1e-12);
   EXPECT_NEAR(cf.max_overlap(v_rel), osc.max_overlap(v_rel), 1e-12 * osc.max_overlap(v_rel));
   // the integrated collision against both
-  for (const auto& [tc, e, dmax] : {std::tuple{osc.contact_time(), osc.restitution(), osc.max_overlap(v_rel)},
-                                    std::tuple{cf.contact_time(), cf.restitution(), cf.max_overlap(v_rel)}}) {
+  for (const auto& [tc, e, dmax] :
+       {std::tuple{osc.contact_time(), osc.restitution(), osc.max_overlap(v_rel)},
+        std::tuple{cf.contact_time(), cf.restitution(), cf.max_overlap(v_rel)}}) {
     EXPECT_NEAR(m.contact_time, tc, kTolTime * tc);
     EXPECT_NEAR(m.restitution, e, kTolRestitution * e);
     EXPECT_NEAR(m.max_overlap, dmax, kTolOverlap * dmax);
@@ -226,14 +230,16 @@ TEST(ContactCollision, RestitutionGivenHoldsForPairAndWall) {
   const double e = 0.9;
   const LinearSpringDashpot law = restitution(e);
   for (double m12 : {0.5 * kMass, kMass}) {
-    EXPECT_NEAR(law.beta_for(m12), beta_for_restitution(e, kK, m12), 1e-12 * beta_for_restitution(e, kK, m12));
+    EXPECT_NEAR(law.beta_for(m12), beta_for_restitution(e, kK, m12),
+                1e-12 * beta_for_restitution(e, kK, m12));
     EXPECT_NEAR(Oscillator(kK, law.beta_for(m12), m12).restitution(), e, 1e-12);
   }
   // the peers' table (shared/peers/README.md, 7 digits): beta = m_eff gamma_n
   EXPECT_NEAR(law.beta_for(0.5 * kMass), 5.423357e-6, 1e-12);
   EXPECT_NEAR(law.beta_for(kMass), 7.669786e-6, 1e-12);
 
-  const Oscillator pair(kK, law.beta_for(0.5 * kMass), 0.5 * kMass), wall(kK, law.beta_for(kMass), kMass);
+  const Oscillator pair(kK, law.beta_for(0.5 * kMass), 0.5 * kMass),
+      wall(kK, law.beta_for(kMass), kMass);
   const Measured mp = head_on(law, pair.contact_time() / kStepsPerContact);
   const Measured mw = wall_impact(law, wall.contact_time() / kStepsPerContact);
   expect_matches(mp, law.beta_for(0.5 * kMass), 0.5 * kMass, kV0);
@@ -257,7 +263,8 @@ TEST(ContactCollision, ClipAttraction) {
   const double scale = kK * pair.max_overlap(kV0);  // peak spring force
 
   const Measured free_p = head_on(restitution(e, false), pair.contact_time() / kStepsPerContact);
-  const Measured free_w = wall_impact(restitution(e, false), wall.contact_time() / kStepsPerContact);
+  const Measured free_w =
+      wall_impact(restitution(e, false), wall.contact_time() / kStepsPerContact);
   // the pull at release is beta e v ~ 5e-8 N (pair), ~6 % of the peak spring force k delta_max
   EXPECT_GT(free_p.max_pull, 0.01 * scale);
   EXPECT_GT(free_w.max_pull, 0.01 * scale);
@@ -316,9 +323,11 @@ TEST(ContactForces, ActionReactionIsExact) {
   cells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), 2.0 * 1.5 * kR + kSkin);
   ContactNeighbourList list;
   list.build(s, cells, kSkin);
-  for (std::size_t i = 0; i < s.n_owned; ++i) ASSERT_EQ(list.offset[i + 1] - list.offset[i], 1u) << i;
+  for (std::size_t i = 0; i < s.n_owned; ++i)
+    ASSERT_EQ(list.offset[i + 1] - list.offset[i], 1u) << i;
 
-  for (const LinearSpringDashpot& law : {dashpot(kBeta), restitution(0.7), restitution(0.7, true)}) {
+  for (const LinearSpringDashpot& law :
+       {dashpot(kBeta), restitution(0.7), restitution(0.7, true)}) {
     compute_contact_forces(s, list, law, HaloImages{s.n_owned}, 0.0);
     std::size_t nonzero = 0;
     for (std::size_t p = 0; p < n_pairs; ++p) {
@@ -331,9 +340,11 @@ TEST(ContactForces, ActionReactionIsExact) {
       const double dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j], dz = s.z[i] - s.z[j];
       const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
       const double delta = s.radius[i] + s.radius[j] - r;
-      const double rate = -((s.vx[i] - s.vx[j]) * dx + (s.vy[i] - s.vy[j]) * dy + (s.vz[i] - s.vz[j]) * dz) / r;
+      const double rate =
+          -((s.vx[i] - s.vx[j]) * dx + (s.vy[i] - s.vy[j]) * dy + (s.vz[i] - s.vz[j]) * dz) / r;
       const double m12 = s.mass[i] * s.mass[j] / (s.mass[i] + s.mass[j]);
-      const double beta = law.restitution > 0 ? beta_for_restitution(law.restitution, kK, m12) : law.beta;
+      const double beta =
+          law.restitution > 0 ? beta_for_restitution(law.restitution, kK, m12) : law.beta;
       double fn = kK * delta + beta * rate;
       if (law.clip_attraction) fn = std::max(fn, 0.0);
       const double f = (s.cx[i] * dx + s.cy[i] * dy + s.cz[i] * dz) / r;
