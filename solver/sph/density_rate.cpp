@@ -5,50 +5,122 @@
 #include <algorithm>
 #include <cmath>
 
+#include "domain/row_partition.hpp"
 #include "sph/kernel.hpp"
 
 namespace sphdem {
 
+namespace {
+
+// One pair's terms of (2.53)/(2.54): a's with h_a, b's with h_b (u_ba . r_ba = u_ab . r_ab).
+// Zero beyond both supports (the list's skin).
+struct DensityTerms {
+  double dwdh_a, div_a, dwdh_b, div_b;
+};
+inline DensityTerms density_terms(double r, double udotr, double inv_ha, double inv_hb, double ma,
+                                  double mb) {
+  const double qa = r * inv_ha, qb = r * inv_hb;
+  return {mb * kernel::dw_dh_q(qa, inv_ha), mb * kernel::grad_factor_q(qa, inv_ha) * udotr,
+          ma * kernel::dw_dh_q(qb, inv_hb), ma * kernel::grad_factor_q(qb, inv_hb) * udotr};
+}
+
+inline double self_dwdh(const FluidParticles& f, long a) {  // the self term of (2.54)
+  return f.mass[a] * kernel::dw_dh_q(0.0, f.inv_h[a]);
+}
+
+// Rows [lo, hi) of the half list, one pair at a time: the skin's entries are skipped, an
+// owned b gets its share at once.
+void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, PairAccumulator& acc,
+                           int t, long lo, long hi) {
+  const auto n = static_cast<std::uint32_t>(f.n_owned);
+  for (long a = lo; a < hi; ++a) {
+    const double ha = f.h[a], inv_ha = f.inv_h[a], ma = f.mass[a];
+    const double xa = f.x[a], ya = f.y[a], za = f.z[a];
+    const double vxa = f.vx[a], vya = f.vy[a], vza = f.vz[a];
+    double sum_dwdh = self_dwdh(f, a), sum_div = 0.0;
+    for (std::uint32_t k = half.begin(a); k < half.end(a); ++k) {
+      const std::uint32_t b = half.neighbour[k];
+      const double dx = xa - f.x[b], dy = ya - f.y[b], dz = za - f.z[b];
+      const double r2 = dx * dx + dy * dy + dz * dz,
+                   reach = kernel::kSupport * std::max(ha, f.h[b]);
+      if (r2 >= reach * reach) continue;  // in the list's skin only
+      const double udotr = (vxa - f.vx[b]) * dx + (vya - f.vy[b]) * dy + (vza - f.vz[b]) * dz;
+      const DensityTerms d = density_terms(std::sqrt(r2), udotr, inv_ha, f.inv_h[b], ma, f.mass[b]);
+      sum_dwdh += d.dwdh_a;
+      sum_div += d.div_a;
+      if (b < n) {  // the mirror pair, for the owned b
+        double* rb = acc.row(t, b);
+        rb[0] += d.dwdh_b;
+        rb[1] += d.div_b;
+      }
+    }
+    double* ra = acc.row(t, a);
+    ra[0] += sum_dwdh;
+    ra[1] += sum_div;
+  }
+}
+
+// The same rows, each row's pairs in eight lanes: b's shares are kept per entry and
+// scattered after the vectorised loop (a halo b's go to the spare row n); the skin's
+// entries are evaluated and come out zero.
+SPHDEM_TARGET_AVX512 void density_rows_avx512(const FluidParticles& f, const NeighbourList& half,
+                                              PairAccumulator& acc, int t, long lo, long hi) {
+  const auto n = static_cast<std::uint32_t>(f.n_owned);
+  const double* __restrict x = f.x.data();
+  const double* __restrict y = f.y.data();
+  const double* __restrict z = f.z.data();
+  const double* __restrict vx = f.vx.data();
+  const double* __restrict vy = f.vy.data();
+  const double* __restrict vz = f.vz.data();
+  const double* __restrict inv_h = f.inv_h.data();
+  const double* __restrict mass = f.mass.data();
+  for (long a = lo; a < hi; ++a) {
+    const double inv_ha = inv_h[a], ma = mass[a];
+    const double xa = x[a], ya = y[a], za = z[a];
+    const double vxa = vx[a], vya = vy[a], vza = vz[a];
+    const std::uint32_t* __restrict nb = half.neighbour.data() + half.begin(a);
+    const std::uint32_t len = half.end(a) - half.begin(a);
+    double* __restrict mirror_dwdh = acc.entries(t, 2 * std::size_t{len});
+    double* __restrict mirror_div = mirror_dwdh + len;
+    double sum_dwdh = self_dwdh(f, a), sum_div = 0.0;
+#pragma omp simd reduction(+ : sum_dwdh, sum_div)
+    for (std::uint32_t k = 0; k < len; ++k) {
+      const std::uint32_t b = nb[k];
+      const double dx = xa - x[b], dy = ya - y[b], dz = za - z[b];
+      const double udotr = (vxa - vx[b]) * dx + (vya - vy[b]) * dy + (vza - vz[b]) * dz;
+      const DensityTerms d = density_terms(std::sqrt(dx * dx + dy * dy + dz * dz), udotr, inv_ha,
+                                           inv_h[b], ma, mass[b]);
+      sum_dwdh += d.dwdh_a;
+      sum_div += d.div_a;
+      mirror_dwdh[k] = d.dwdh_b;
+      mirror_div[k] = d.div_b;
+    }
+    for (std::uint32_t k = 0; k < len; ++k) {
+      double* rb = acc.row(t, std::min(nb[k], n));
+      rb[0] += mirror_dwdh[k];
+      rb[1] += mirror_div[k];
+    }
+    double* ra = acc.row(t, a);
+    ra[0] += sum_dwdh;
+    ra[1] += sum_div;
+  }
+}
+
+}  // namespace
+
 std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& acc,
-                                 bool voidage_weighted_pressure, const HydrostaticPressure& ph) {
+                                 bool voidage_weighted_pressure, const HydrostaticPressure& ph,
+                                 PairIsa isa) {
   const long n = static_cast<long>(f.n_owned);
-  acc.reset(n, 2);  // per particle: sum_b m_b dW/dh, sum_b m_b u_ab . grad W
+  acc.reset(n + 1, 2);  // per particle: sum_b m_b dW/dh, sum_b m_b u_ab . grad W; row n spare
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
-#pragma omp for schedule(static)
-    for (long a = 0; a < n; ++a) {
-      const double inv_ha = f.inv_h[a], ma = f.mass[a], ha = f.h[a];
-      const double xa = f.x[a], ya = f.y[a], za = f.z[a];
-      const double vxa = f.vx[a], vya = f.vy[a], vza = f.vz[a];
-      double sum_dwdh = ma * kernel::dw_dh_q(0.0, inv_ha), sum_div = 0.0;  // self term of (2.54)
-      for (std::uint32_t k = half.begin(a); k < half.end(a); ++k) {
-        const std::uint32_t b = half.neighbour[k];
-        const double dx = xa - f.x[b], dy = ya - f.y[b], dz = za - f.z[b];
-        const double r2 = dx * dx + dy * dy + dz * dz,
-                     reach = kernel::kSupport * std::max(ha, f.h[b]);
-        if (r2 >= reach * reach) continue;  // in the list's skin only
-        const double r = std::sqrt(r2);
-        const double udotr = (vxa - f.vx[b]) * dx + (vya - f.vy[b]) * dy + (vza - f.vz[b]) * dz;
-        const double qa = r * inv_ha;
-        if (qa < kernel::kSupport) {
-          const double mb = f.mass[b];
-          sum_dwdh += mb * kernel::dw_dh_q(qa, inv_ha);
-          sum_div += mb * kernel::grad_factor_q(qa, inv_ha) * udotr;
-        }
-        if (b < static_cast<std::uint32_t>(n)) {  // the mirror pair, for the owned b
-          const double inv_hb = f.inv_h[b], qb = r * inv_hb;
-          if (qb < kernel::kSupport) {
-            double* rb = acc.row(t, b);
-            rb[0] += ma * kernel::dw_dh_q(qb, inv_hb);
-            rb[1] += ma * kernel::grad_factor_q(qb, inv_hb) * udotr;  // u_ba . r_ba = u_ab . r_ab
-          }
-        }
-      }
-      double* ra = acc.row(t, a);
-      ra[0] += sum_dwdh;
-      ra[1] += sum_div;
-    }
+    const auto [lo, hi] = thread_rows(half.offset, n, kPairRowCost);
+    if (isa == PairIsa::kAvx512)
+      density_rows_avx512(f, half, acc, t, lo, hi);
+    else
+      density_rows_baseline(f, half, acc, t, lo, hi);
   }
   std::size_t bounded = 0;
 #pragma omp parallel for schedule(static) reduction(+ : bounded)
@@ -60,7 +132,8 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
     }
     f.omega[a] = omega;
     f.drho[a] = acc.sum(a, 1) / omega;
-    f.p_term[a] = (voidage_weighted_pressure ? f.eps[a] : 1.0) * (f.P[a] - ph(f.z[a])) / (omega * f.rho[a] * f.rho[a]);
+    f.p_term[a] = (voidage_weighted_pressure ? f.eps[a] : 1.0) * (f.P[a] - ph(f.z[a])) /
+                  (omega * f.rho[a] * f.rho[a]);
   }
   return bounded;
 }

@@ -3,6 +3,7 @@
 #include "sph/fluid_particles.hpp"
 #include "sph/hydrostatic_pressure.hpp"
 #include "sph/pair_accumulator.hpp"
+#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
@@ -17,7 +18,8 @@ namespace sphdem {
 // sum is truncated); returns how many particles hit that bound.
 // With a hydrostatic pressure ph, the pair term carries P - ph(z) instead of P (the
 // hydrostatic split of the variational coupling; ph's own force is added analytically).
-std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& scratch,
-                                 bool voidage_weighted_pressure = false, const HydrostaticPressure& ph = {});
+std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half,
+                                 PairAccumulator& scratch, bool voidage_weighted_pressure = false,
+                                 const HydrostaticPressure& ph = {}, PairIsa isa = best_pair_isa());
 
 }  // namespace sphdem

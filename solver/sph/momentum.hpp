@@ -2,13 +2,14 @@
 #include "domain/neighbour_list.hpp"
 #include "sph/fluid_particles.hpp"
 #include "sph/pair_accumulator.hpp"
+#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
 struct MomentumParams {
-  double viscosity = 8.9e-4;   // mu (Pa s), Morris et al. (1997) laminar term
+  double viscosity = 8.9e-4;      // mu (Pa s), Morris et al. (1997) laminar term
   double alpha_artificial = 0.0;  // Monaghan Pi_ab (2.56) on approaching pairs only
-  double cfl = 0.25;           // dt_a = cfl h_a / v_sig,a (3.5)
+  double cfl = 0.25;              // dt_a = cfl h_a / v_sig,a (3.5)
 };
 
 // theta_a: pressure + viscous acceleration of each owned mobile fluid particle (2.55/2.70
@@ -20,7 +21,8 @@ struct MomentumParams {
 // allows it); Monaghan's term with alpha_artificial acts only on approaching pairs.
 // Over a half neighbour list: each owned pair is evaluated once and written to both
 // particles with opposite signs, so the pair forces cancel exactly.
-void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& half, const MomentumParams& p,
-                                PairAccumulator& scratch);
+void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& half,
+                                const MomentumParams& p, PairAccumulator& scratch,
+                                PairIsa isa = best_pair_isa());
 
 }  // namespace sphdem

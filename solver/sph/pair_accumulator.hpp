@@ -2,7 +2,8 @@
 // Per-thread accumulation arrays for passes over a half neighbour list: a pair (a, b)
 // of owned particles is visited once and adds to both; each thread adds into its own
 // copy, and the copies are summed afterwards (no atomics, deterministic for a fixed
-// thread count).
+// thread count). A pass that splits a row into a vectorised evaluation and a scalar
+// scatter keeps the row's mirror contributions in the thread's entry buffer.
 #include <omp.h>
 
 #include <algorithm>
@@ -19,6 +20,13 @@ class PairAccumulator {
     fields_ = fields;
     threads_ = omp_get_max_threads();
     data_.assign(static_cast<std::size_t>(threads_) * n * fields, 0.0);
+    entries_.resize(threads_);
+  }
+  // The calling thread's buffer of at least `count` doubles (grows only on a longer row).
+  double* entries(int thread, std::size_t count) {
+    std::vector<double>& e = entries_[thread];
+    if (e.size() < count) e.resize(count);
+    return e.data();
   }
   // The calling thread's row for particle i.
   double* row(int thread, std::size_t i) { return data_.data() + (thread * n_ + i) * fields_; }
@@ -38,6 +46,7 @@ class PairAccumulator {
   std::size_t n_ = 0;
   int fields_ = 0, threads_ = 1;
   std::vector<double> data_;
+  std::vector<std::vector<double>> entries_;  // per thread, kept between passes
 };
 
 }  // namespace sphdem

@@ -1,0 +1,23 @@
+#pragma once
+// The instruction set the SPH pair passes run with: the x86-64 baseline on every CPU, or
+// AVX-512 (x86-64-v4: gathers, eight lanes, fused multiply-add) where the CPU has it. One
+// binary; the CPU is asked once. The two give the same sums to round-off (a unit test
+// compares them), not the same bits.
+namespace sphdem {
+
+enum class PairIsa { kBaseline, kAvx512 };
+
+// A row's cost beside its entries' (one each) when the pair passes split rows between
+// threads (domain/row_partition.hpp).
+inline constexpr double kPairRowCost = 4.0;
+
+PairIsa best_pair_isa();
+
+}  // namespace sphdem
+
+// Marks a function compiled for x86-64-v4 (empty where that does not exist).
+#if defined(__x86_64__) && defined(__GNUC__)
+#define SPHDEM_TARGET_AVX512 [[gnu::target("arch=x86-64-v4")]]
+#else
+#define SPHDEM_TARGET_AVX512
+#endif
