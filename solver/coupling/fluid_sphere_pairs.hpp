@@ -14,6 +14,7 @@
 #include "domain/cell_list.hpp"
 #include "domain/neighbour_list.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
@@ -47,7 +48,8 @@ struct FluidSpherePairs {
                   double rc);
   // Kernel values at the current positions (every step); the gradient factors only
   // with_gradient (the variational pressure coupling reads them).
-  void evaluate(const FluidParticles& f, const DemParticles& s, bool with_gradient = true);
+  void evaluate(const FluidParticles& f, const DemParticles& s, bool with_gradient = true,
+                PairIsa isa = best_pair_isa());
   // Both, at the cells' cut-off (tests).
   void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells,
              double kernel_scale = 1.0) {

@@ -11,6 +11,7 @@ namespace sphdem {
 // fm_j is the fluid force the sphere received (averaged over the SPH step) and S_j
 // the Shepard sum (2.72) over the same pairs, so sum_a f_a + sum_j fm_j = 0 to
 // round-off. Halo spheres must carry fm and shepard.
-void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs);
+void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
+                           PairIsa isa = best_pair_isa());
 
 }  // namespace sphdem

@@ -5,6 +5,7 @@
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
@@ -22,7 +23,9 @@ struct BigSpheresSmoothedApart {
 // and the local Sauter mean diameter of the solids, sum_j V_j W / sum_j (V_j/d_j) W (2.80).
 // eps is clamped to eps_floor (default 0.3): the kernel estimate can undershoot in a
 // dense sediment; returns how many particles were clamped (logged per step).
-std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
-                                  double eps_floor, const BigSpheresSmoothedApart* big = nullptr);
+std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s,
+                                  const FluidSpherePairs& pairs, double eps_floor,
+                                  const BigSpheresSmoothedApart* big = nullptr,
+                                  PairIsa isa = best_pair_isa());
 
 }  // namespace sphdem

@@ -3,6 +3,7 @@
 // pressure coupling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -52,7 +53,8 @@ void rebuild_sphere_side(Config& c) {
 
 // A jittered fluid lattice (bottom layer = wall) and random spheres, some across
 // the periodic faces, with halos and cell lists built as Simulation does.
-void build(Config& c, int n_spheres, unsigned seed, double jitter = 0.1, double kernel_scale = 1.0) {
+void build(Config& c, int n_spheres, unsigned seed, double jitter = 0.1,
+           double kernel_scale = 1.0) {
   c.kernel_scale = kernel_scale;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -98,7 +100,8 @@ void build(Config& c, int n_spheres, unsigned seed, double jitter = 0.1, double 
   c.fh.build(c.box, c.cutoff, f.x.data(), f.y.data(), f.z.data(), f.n_owned);
   f.resize(f.n_owned + c.fh.n_ghost());
   c.fh.fill_positions(f.x.data(), f.y.data(), f.z.data());
-  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.thx, &f.thy, &f.thz}) c.fh.fill(*v);
+  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.thx, &f.thy, &f.thz})
+    c.fh.fill(*v);
   c.fh.fill(f.kind);
   c.fcells.build(f.x.data(), f.y.data(), f.z.data(), f.size(), c.cutoff, 2);
   rebuild_sphere_side(c);
@@ -142,7 +145,8 @@ TEST(Coupling, ActionAndReactionCancelToRoundOff) {
       rsum[1] += f.mass[a] * f.ay[a];
       rsum[2] += f.mass[a] * f.az[a];
     }
-    for (int d = 0; d < 3; ++d) EXPECT_LT(std::abs(rsum[d] + fsum[d]), 1e-13 * fabs_sum) << "axis " << d;
+    for (int d = 0; d < 3; ++d)
+      EXPECT_LT(std::abs(rsum[d] + fsum[d]), 1e-13 * fabs_sum) << "axis " << d;
   }
 }
 
@@ -286,12 +290,14 @@ TEST(Coupling, VariationalPressureForceIsBuoyancy) {
     int checked = 0;
     double worst = 0.0;
     for (std::size_t j = 0; j < s.n_owned; ++j) {
-      if (s.z[j] < 3.5 * dx || s.z[j] > c.box.hi[2] - 3.5 * dx) continue;  // kernel cut by the wall or the top
+      if (s.z[j] < 3.5 * dx || s.z[j] > c.box.hi[2] - 3.5 * dx)
+        continue;  // kernel cut by the wall or the top
       ++checked;
       worst = std::max(worst, std::abs(s.gz[j] / (rho * g) - 1.0));
       worst = std::max(worst, std::hypot(s.gx[j], s.gy[j]) / (rho * g));
     }
-    std::printf("jitter %.1f dx: %d spheres, largest relative error of the buoyancy %.2e\n", jitter, checked, worst);
+    std::printf("jitter %.1f dx: %d spheres, largest relative error of the buoyancy %.2e\n", jitter,
+                checked, worst);
     EXPECT_GE(checked, 10);
     EXPECT_LT(worst, jitter == 0.0 ? 0.015 : 0.08);
   }
@@ -304,7 +310,9 @@ struct TaitEnergy {
   double rho0 = 1000.0, B = 1e5;
   int gamma = 7;
   double pressure(double rho) const { return B * (std::pow(rho / rho0, gamma) - 1.0); }
-  double energy(double rho) const { return B * (std::pow(rho / rho0, gamma) / ((gamma - 1) * rho) + 1.0 / rho); }
+  double energy(double rho) const {
+    return B * (std::pow(rho / rho0, gamma) / ((gamma - 1) * rho) + 1.0 / rho);
+  }
 };
 
 // Rebuilds the sphere halo, pairs and voidage after moving particles, sets P from the
@@ -340,14 +348,17 @@ double coupling_energy(Config& c, const TaitEnergy& eos, const HydrostaticPressu
 // floor of the differences (step 3e-7: 9e-5, truncation; 1e-8: 9e-5, round-off).
 TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
   const TaitEnergy eos;
-  for (const auto& [split, kernel_scale] : {std::pair{false, 1.0}, {true, 1.0}, {false, 2.0}, {true, 2.0}}) {
+  for (const auto& [split, kernel_scale] :
+       {std::pair{false, 1.0}, {true, 1.0}, {false, 2.0}, {true, 2.0}}) {
     Config c;
     build(c, 12, 9u, 0.1, kernel_scale);
     FluidParticles& f = c.f;
     DemParticles& s = c.s;
-    for (std::size_t j = 0; j < s.n_owned; ++j) s.radius[j] *= 2.0;  // voidage 0.9-1, away from the floor
+    for (std::size_t j = 0; j < s.n_owned; ++j)
+      s.radius[j] *= 2.0;  // voidage 0.9-1, away from the floor
     // a strong 'gravity' so that P_h (up to 4e4 Pa) is as large as the EOS's P (B = 1e5 Pa)
-    const HydrostaticPressure ph = split ? HydrostaticPressure{1000.0, -2e4, c.box.hi[2]} : HydrostaticPressure{};
+    const HydrostaticPressure ph =
+        split ? HydrostaticPressure{1000.0, -2e4, c.box.hi[2]} : HydrostaticPressure{};
     coupling_energy(c, eos, ph);
     std::fill(f.ax.begin(), f.ax.end(), 0.0);
     std::fill(f.ay.begin(), f.ay.end(), 0.0);
@@ -369,27 +380,102 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
     double worst = 0.0;
     int spheres = 0, fluid = 0;
     for (std::size_t j = 0; j < s.n_owned; ++j) {
-      if (c.sh.n_ghost() && (s.y[j] < 1e-5)) continue;  // on the periodic face (images move too; kept simple)
+      if (c.sh.n_ghost() && (s.y[j] < 1e-5))
+        continue;  // on the periodic face (images move too; kept simple)
       const double V = s.volume(j);
       const double analytic[3] = {V * sgx[j], V * sgy[j], V * sgz[j]};
       double* coord[3] = {&s.x[j], &s.y[j], &s.z[j]};
       const double scale = std::hypot(analytic[0], analytic[1], analytic[2]);
-      for (int d = 0; d < 3; ++d) worst = std::max(worst, std::abs(minus_gradient(*coord[d]) - analytic[d]) / scale);
+      for (int d = 0; d < 3; ++d)
+        worst = std::max(worst, std::abs(minus_gradient(*coord[d]) - analytic[d]) / scale);
       ++spheres;
     }
     for (std::size_t a = 0; a < f.n_owned && fluid < 20; ++a) {
-      if (f.kind[a] != kFluid || std::abs(fax[a]) + std::abs(fay[a]) < 1e-3 * std::abs(faz[a])) continue;
+      if (f.kind[a] != kFluid || std::abs(fax[a]) + std::abs(fay[a]) < 1e-3 * std::abs(faz[a]))
+        continue;
       const double m = f.mass[a];
       const double analytic[3] = {m * fax[a], m * fay[a], m * faz[a]};
       double* coord[3] = {&f.x[a], &f.y[a], &f.z[a]};
       const double scale = std::hypot(analytic[0], analytic[1], analytic[2]);
-      for (int d = 0; d < 3; ++d) worst = std::max(worst, std::abs(minus_gradient(*coord[d]) - analytic[d]) / scale);
+      for (int d = 0; d < 3; ++d)
+        worst = std::max(worst, std::abs(minus_gradient(*coord[d]) - analytic[d]) / scale);
       ++fluid;
     }
-    std::printf("split %d, sphere kernel scale %g: %d spheres, %d fluid particles, largest relative deviation %.2e\n",
-                split, kernel_scale, spheres, fluid, worst);
+    std::printf(
+        "split %d, sphere kernel scale %g: %d spheres, %d fluid particles, largest relative "
+        "deviation %.2e\n",
+        split, kernel_scale, spheres, fluid, worst);
     EXPECT_GE(spheres, 5);
     EXPECT_EQ(fluid, 20);
     EXPECT_LT(worst, 1e-4);
+  }
+}
+
+// Each fluid particle's kept entries are exactly the spheres (owned and halo) within its
+// kernel support 2 H_a, with W(r, H_a) and its gradient factor; the voidage (2.50) and the
+// reaction (2.71) over them are the sums over every sphere: all found here by brute force,
+// with either instruction set of the passes (sph/pair_isa.hpp).
+TEST(Coupling, PairPassesMatchBruteForceWithEitherInstructionSet) {
+  Config c;
+  build(c, 60, 11, 0.1, /*kernel_scale=*/1.5);
+  FluidParticles& f = c.f;
+  DemParticles& s = c.s;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::size_t j = 0; j < s.size(); ++j) {  // halo copies need not match their owners here
+    s.fmx[j] = u(rng);
+    s.fmy[j] = u(rng);
+    s.fmz[j] = u(rng);
+    s.shepard[j] = j % 7 == 0 ? 0.0 : 1.0 + 0.5 * u(rng);  // some spheres see no fluid
+  }
+  std::vector<PairIsa> isas{PairIsa::kBaseline};
+  if (best_pair_isa() == PairIsa::kAvx512) isas.push_back(PairIsa::kAvx512);
+  for (PairIsa isa : isas) {
+    c.pairs.evaluate(f, s, true, isa);
+    compute_fluid_voidage(f, s, c.pairs, 0.0, nullptr, isa);
+    for (std::size_t a = 0; a < f.n_owned; ++a) f.ax[a] = f.ay[a] = f.az[a] = 0.0;
+    add_reaction_on_fluid(f, s, c.pairs, isa);
+    std::size_t pairs_seen = 0;
+    for (std::size_t a = 0; a < f.n_owned; ++a) {
+      const double inv_h = c.pairs.inv_kernel_h(f, a), H = 1.0 / inv_h;
+      std::vector<std::pair<std::uint32_t, double>> want, got;
+      double solid = 0.0, react[3] = {0, 0, 0}, react_abs = 0.0;
+      for (std::uint32_t j = 0; j < s.size(); ++j) {
+        const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];
+        const double r2 = dx * dx + dy * dy + dz * dz;
+        if (r2 >= 4.0 * H * H) continue;
+        want.push_back({j, r2});
+        solid += 4.0 / 3.0 * M_PI * std::pow(s.radius[j], 3) * kernel::w(r2, H);
+        if (s.shepard[j] == 0.0) continue;
+        const double share = kernel::w(r2, H) / s.shepard[j];
+        react[0] += s.fmx[j] * share;
+        react[1] += s.fmy[j] * share;
+        react[2] += s.fmz[j] * share;
+        react_abs += (std::abs(s.fmx[j]) + std::abs(s.fmy[j]) + std::abs(s.fmz[j])) * share;
+      }
+      EXPECT_NEAR(f.eps[a], 1.0 - solid, 1e-13) << "fluid particle " << a;
+      if (f.kind[a] == kFluid) {
+        const double tol = 1e-13 * react_abs / f.rho[a];
+        EXPECT_NEAR(f.ax[a], -react[0] / f.rho[a], tol) << "fluid particle " << a;
+        EXPECT_NEAR(f.ay[a], -react[1] / f.rho[a], tol) << "fluid particle " << a;
+        EXPECT_NEAR(f.az[a], -react[2] / f.rho[a], tol) << "fluid particle " << a;
+      }
+      for (std::uint32_t k = c.pairs.begin(a); k < c.pairs.end(a); ++k)
+        got.push_back({c.pairs.sphere[k], 0.0});
+      ASSERT_EQ(got.size(), want.size()) << "fluid particle " << a;
+      std::sort(got.begin(), got.end());
+      for (std::size_t i = 0; i < want.size(); ++i)
+        ASSERT_EQ(got[i].first, want[i].first) << "fluid particle " << a;
+      for (std::uint32_t k = c.pairs.begin(a); k < c.pairs.end(a); ++k) {
+        const std::uint32_t j = c.pairs.sphere[k];
+        const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];
+        const double r2 = dx * dx + dy * dy + dz * dz;
+        EXPECT_NEAR(c.pairs.w[k], kernel::w(r2, H), 1e-13 * kernel::w(0.0, H));
+        EXPECT_NEAR(c.pairs.grad[k], kernel::grad_factor(r2, H),
+                    1e-13 * std::abs(kernel::grad_factor(0.25 * H * H, H)));
+        ++pairs_seen;
+      }
+    }
+    EXPECT_GT(pairs_seen, 10 * f.n_owned) << "the configuration should give every particle spheres";
   }
 }
