@@ -45,8 +45,8 @@ void evaluate_row_baseline(FluidSpherePairs& p, const FluidParticles& f, const D
 // The same row in eight lanes: every entry's values first (W = 0 beyond the support),
 // then the entries with W > 0 moved forward in place, without a branch.
 template <bool kGradient>
-[[gnu::always_inline]] inline void evaluate_row_lanes(FluidSpherePairs& p, const FluidParticles& f,
-                                                      const DemParticles& s, std::size_t a) {
+inline void evaluate_row_lanes(FluidSpherePairs& p, const FluidParticles& f, const DemParticles& s,
+                               std::size_t a) {
   const double inv_h = p.inv_kernel_h(f, a);
   const double xa = f.x[a], ya = f.y[a], za = f.z[a];
   const std::uint32_t k0 = p.list.begin(a), len = p.list.end(a) - k0;

@@ -10,9 +10,8 @@ namespace {
 // sum_j fm_j W_aj / S_j over row a's spheres (S_j = 0: a sphere with no fluid, no share);
 // in lanes (AVX-512 gathers) or one sphere at a time.
 template <bool kLanes>
-[[gnu::always_inline]] inline void reaction_rows(FluidParticles& f, const DemParticles& s,
-                                                 const FluidSpherePairs& pairs, std::size_t lo,
-                                                 std::size_t hi) {
+inline void reaction_rows(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
+                          std::size_t lo, std::size_t hi) {
   const std::uint32_t* __restrict sphere = pairs.sphere.data();
   const double* __restrict w = pairs.w.data();
   const double* __restrict shepard = s.shepard.data();

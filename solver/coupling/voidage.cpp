@@ -16,9 +16,8 @@ struct SolidSums {
 };
 
 template <bool kLanes>
-[[gnu::always_inline]] inline SolidSums solid_sums(const DemParticles& s,
-                                                   const FluidSpherePairs& pairs, std::size_t a,
-                                                   const BigSpheresSmoothedApart* big) {
+inline SolidSums solid_sums(const DemParticles& s, const FluidSpherePairs& pairs, std::size_t a,
+                            const BigSpheresSmoothedApart* big) {
   double solid = 0.0, solid_over_d = 0.0;
   if constexpr (kLanes) {
     const std::uint32_t* __restrict sphere = pairs.sphere.data();
@@ -45,11 +44,10 @@ template <bool kLanes>
 
 // eps_a (2.50), clamped to the floor, and the Sauter mean (2.80) for rows [lo, hi).
 template <bool kLanes>
-[[gnu::always_inline]] inline std::size_t voidage_rows(FluidParticles& f, const DemParticles& s,
-                                                       const FluidSpherePairs& pairs,
-                                                       double eps_floor,
-                                                       const BigSpheresSmoothedApart* big,
-                                                       std::size_t lo, std::size_t hi) {
+inline std::size_t voidage_rows(FluidParticles& f, const DemParticles& s,
+                                const FluidSpherePairs& pairs, double eps_floor,
+                                const BigSpheresSmoothedApart* big, std::size_t lo,
+                                std::size_t hi) {
   std::size_t clamped = 0;
   for (std::size_t a = lo; a < hi; ++a) {
     auto [solid, solid_over_d] = solid_sums<kLanes>(s, pairs, a, big);

@@ -14,9 +14,9 @@ namespace {
 
 // Rows [lo, hi) of the half list: theta and the signal speed of a, and of each owned b
 // (the mirror pair: r_ba = -r_ab, u_ba = -u_ab).
-[[gnu::always_inline]] inline void momentum_rows(const FluidParticles& f, const NeighbourList& half,
-                                                 const MomentumParams& p, PairAccumulator& acc,
-                                                 int t, std::size_t lo, std::size_t hi) {
+inline void momentum_rows(const FluidParticles& f, const NeighbourList& half,
+                          const MomentumParams& p, PairAccumulator& acc, int t, std::size_t lo,
+                          std::size_t hi) {
   const auto n = static_cast<std::uint32_t>(f.n_owned);
   const double two_mu = 2.0 * p.viscosity;
   for (std::size_t a = lo; a < hi; ++a) {

@@ -15,9 +15,12 @@ PairIsa best_pair_isa();
 
 }  // namespace sphdem
 
-// Marks a function compiled for x86-64-v4 (empty where that does not exist).
+// Marks a function compiled for x86-64-v4 (empty where that does not exist), with the
+// functions it calls inlined into it (flatten: the row loops are written once, for both
+// instruction sets; a build with -march=native, whose callees cannot be inlined into a
+// narrower target, still compiles).
 #if defined(__x86_64__) && defined(__GNUC__)
-#define SPHDEM_TARGET_AVX512 [[gnu::target("arch=x86-64-v4")]]
+#define SPHDEM_TARGET_AVX512 [[gnu::target("arch=x86-64-v4"), gnu::flatten]]
 #else
 #define SPHDEM_TARGET_AVX512
 #endif
