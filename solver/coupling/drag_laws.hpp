@@ -16,15 +16,21 @@ struct Fluid {
 };
 
 // Scalar c such that f_d = c * u_s. All laws reduce to this form.
-inline double reynolds(double us_mag, double d, const Fluid& f) { return f.rho * us_mag * d / f.mu; }
+inline double reynolds(double us_mag, double d, const Fluid& f) {
+  return f.rho * us_mag * d / f.mu;
+}
 
 // Di Felice (1994) voidage exponent, eq. 2.79.
 inline double di_felice_xi(double re) {
   const double l = 1.5 - std::log10(re);
   return 3.7 - 0.65 * std::exp(-0.5 * l * l);
 }
-// Re floor: the laws below are finite as Re -> 0 but their pieces are not.
+// Re floor: the laws below are finite as Re -> 0 but their pieces are not. (By value, as
+// std::max would be with a NaN: a reference to the constant keeps a loop out of lanes.)
 inline constexpr double kMinRe = 1e-12;
+inline double floored_reynolds(double re) {
+  return re < kMinRe ? kMinRe : re;
+}
 
 // Stokes, eq. 2.73: f = 3 pi mu d u_s.
 struct Stokes {
@@ -41,7 +47,7 @@ struct DiFeliceDallavalle {
     return s * s;
   }
   double coefficient(double eps, double us, double d, const Fluid& f) const {
-    const double re = std::max(reynolds(us, d, f), kMinRe);
+    const double re = floored_reynolds(reynolds(us, d, f));
     // |u_s| C_d written as (0.63 sqrt|u_s| + 4.8 sqrt(mu/(rho d)))^2 stays finite at u_s = 0.
     const double s = 0.63 * std::sqrt(us) + 4.8 * std::sqrt(f.mu / (f.rho * d));
     return 0.125 * s * s * std::pow(eps, -di_felice_xi(re)) * M_PI * d * d * f.rho;
@@ -54,7 +60,7 @@ struct DiFeliceDallavalle {
 // falls 6 % below Stokes at Re = 0.01 (a property of the correlation, not a bug).
 struct CoulsonRichardson {
   double coefficient(double /*eps*/, double us, double d, const Fluid& f) const {
-    const double re = std::max(reynolds(us, d, f), kMinRe);
+    const double re = floored_reynolds(reynolds(us, d, f));
     const double b = std::pow(1.84 * std::pow(re, -0.31) + 0.293 * std::pow(re, 0.06), 3.45);
     // |u_s| = Re mu/(rho d) keeps the product finite as u_s -> 0.
     return 0.25 * M_PI * d * d * f.rho * (re * f.mu / (f.rho * d)) * b;
@@ -68,7 +74,7 @@ struct BrownLawler {
     return 24.0 / re * (1.0 + 0.150 * std::pow(re, 0.681)) + 0.407 / (1.0 + 8710.0 / re);
   }
   double coefficient(double eps, double us, double d, const Fluid& f) const {
-    const double re = std::max(reynolds(us, d, f), kMinRe);
+    const double re = floored_reynolds(reynolds(us, d, f));
     // |u_s| C_d = 24 mu/(rho d) (1 + 0.15 Re^0.681) + |u_s| 0.407/(1 + 8710/Re)
     const double us_cd = 24.0 * f.mu / (f.rho * d) * (1.0 + 0.150 * std::pow(re, 0.681)) +
                          us * 0.407 / (1.0 + 8710.0 / re);
@@ -98,7 +104,7 @@ struct BeetstraPolydisperse {
     return ((1.0 / f) + ((3.0 * eps - 1.0) / 2.0 - 1.0 / f) * y + 0.5 * (1.0 - eps) * y * y) / eps;
   }
   double coefficient(double eps, double us, double d, double d_sauter, const Fluid& fl) const {
-    const double re = std::max(reynolds(us, d_sauter, fl), kMinRe);
+    const double re = floored_reynolds(reynolds(us, d_sauter, fl));
     const double f = f_mono(eps, re);
     return beta(eps, f, d / d_sauter) * f * 3.0 * M_PI * fl.mu * d;
   }
@@ -108,7 +114,8 @@ struct BeetstraPolydisperse {
   }
 };
 
-using DragLaw = std::variant<Stokes, DiFeliceDallavalle, CoulsonRichardson, BrownLawler, BeetstraPolydisperse>;
+using DragLaw =
+    std::variant<Stokes, DiFeliceDallavalle, CoulsonRichardson, BrownLawler, BeetstraPolydisperse>;
 
 // The one registry of drag-law names used by scene files.
 inline const char* const kDragLawNames[] = {"stokes", "di_felice", "coulson_richardson",
@@ -121,19 +128,27 @@ inline double drag_coefficient(const Law& law, double eps, double us, double d, 
                                const Fluid& fl) {
   return law.coefficient(eps, us, d, fl);
 }
-inline double drag_coefficient(const BeetstraPolydisperse& law, double eps, double us, double d, double d_sauter,
-                               const Fluid& fl) {
+inline double drag_coefficient(const BeetstraPolydisperse& law, double eps, double us, double d,
+                               double d_sauter, const Fluid& fl) {
   return law.coefficient(eps, us, d, d_sauter > 0.0 ? d_sauter : d, fl);
 }
 inline bool drag_law_from_name(const std::string& name, DragLaw& out) {
-  if (name == "stokes") out = Stokes{};
-  else if (name == "di_felice") out = DiFeliceDallavalle{};
-  else if (name == "coulson_richardson") out = CoulsonRichardson{};
-  else if (name == "brown_lawler") out = BrownLawler{};
-  else if (name == "beetstra") out = BeetstraPolydisperse{};
-  else return false;
+  if (name == "stokes")
+    out = Stokes{};
+  else if (name == "di_felice")
+    out = DiFeliceDallavalle{};
+  else if (name == "coulson_richardson")
+    out = CoulsonRichardson{};
+  else if (name == "brown_lawler")
+    out = BrownLawler{};
+  else if (name == "beetstra")
+    out = BeetstraPolydisperse{};
+  else
+    return false;
   return true;
 }
-inline std::string drag_law_name(const DragLaw& law) { return kDragLawNames[law.index()]; }
+inline std::string drag_law_name(const DragLaw& law) {
+  return kDragLawNames[law.index()];
+}
 
 }  // namespace sphdem::drag

@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "coupling/drag_coefficients.hpp"
 #include "coupling/fluid_force.hpp"
 #include "domain/reorder.hpp"
 #include "domain/row_partition.hpp"
@@ -153,29 +154,36 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
   const bool variational = p_.variational;
   const auto& g = p_.gravity;
   const drag::Fluid& fluid = p_.fluid;
+  double* const drag_c = drag_c_.data();
+  const PairIsa isa = isa_;
 #pragma omp parallel if (n > kMinParallelSpheres)
-  for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j) {
-    const ContactRow c =
-        contact_row(s, contacts_, contact, bf, history_, images, 0.0, dt_springs, j);
-    store_contact_row<Contact>(s, j, c);
-    double fx = 0, fy = 0, fz = 0;
-    if constexpr (!std::is_same_v<Drag, NoFluid>) {
-      fluid_force_on_sphere(s, j, drag, fluid, fx, fy, fz);
-      if (accumulate_mean) {  // trapezoidal impulse of this sub-step: 0.5 dt (f_old + f_new)
-        // (with the variational coupling the constant pressure part 2 V g is not in it)
-        const double vp2 = variational ? 2.0 * s.volume(j) : 0.0;
-        s.fmx[j] += weight * (s.fx[j] + fx - vp2 * s.gx[j]);
-        s.fmy[j] += weight * (s.fy[j] + fy - vp2 * s.gy[j]);
-        s.fmz[j] += weight * (s.fz[j] + fz - vp2 * s.gz[j]);
+  {
+    const auto [begin, end] = thread_rows(contacts_.offset, n, row_cost());
+    if constexpr (!std::is_same_v<Drag, NoFluid>)
+      drag_coefficients(drag, s, fluid, begin, end, drag_c, isa);
+    for (std::size_t j = begin; j < end; ++j) {
+      const ContactRow c =
+          contact_row(s, contacts_, contact, bf, history_, images, 0.0, dt_springs, j);
+      store_contact_row<Contact>(s, j, c);
+      double fx = 0, fy = 0, fz = 0;
+      if constexpr (!std::is_same_v<Drag, NoFluid>) {
+        fluid_force_on_sphere(s, j, drag_c[j], fx, fy, fz);
+        if (accumulate_mean) {  // trapezoidal impulse of this sub-step: 0.5 dt (f_old + f_new)
+          // (with the variational coupling the constant pressure part 2 V g is not in it)
+          const double vp2 = variational ? 2.0 * s.volume(j) : 0.0;
+          s.fmx[j] += weight * (s.fx[j] + fx - vp2 * s.gx[j]);
+          s.fmy[j] += weight * (s.fy[j] + fy - vp2 * s.gy[j]);
+          s.fmz[j] += weight * (s.fz[j] + fz - vp2 * s.gz[j]);
+        }
+        s.fx[j] = fx;
+        s.fy[j] = fy;
+        s.fz[j] = fz;
       }
-      s.fx[j] = fx;
-      s.fy[j] = fy;
-      s.fz[j] = fz;
+      const double inv_m = 1.0 / s.mass[j];
+      s.ax[j] = (c.fx + fx) * inv_m + g[0];
+      s.ay[j] = (c.fy + fy) * inv_m + g[1];
+      s.az[j] = (c.fz + fz) * inv_m + g[2];
     }
-    const double inv_m = 1.0 / s.mass[j];
-    s.ax[j] = (c.fx + fx) * inv_m + g[0];
-    s.ay[j] = (c.fy + fy) * inv_m + g[1];
-    s.az[j] = (c.fz + fz) * inv_m + g[2];
   }
 }
 
@@ -184,6 +192,7 @@ void DemSubstepper::forces(bool accumulate_mean, double weight, double dt_spring
   DemParticles& s = s_;
   if (s.n_owned == 0) return;
   const long n = static_cast<long>(s.n_owned);
+  if (p_.fluid_force) drag_c_.resize(s.n_owned);
   std::visit(
       [&](const auto& contact) {
         if (!p_.fluid_force)

@@ -14,6 +14,7 @@
 #include "domain/cell_list.hpp"
 #include "domain/periodic_halo.hpp"
 #include "propagator/step_params.hpp"
+#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
@@ -81,7 +82,9 @@ class DemSubstepper {
   FluidReach reach_;
   std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // accelerations of the previous sub-step
   std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // g before a variational coupling pass
-  OldTorque torque_old_;                             // torques of the previous sub-step
+  std::vector<double> drag_c_;     // drag coefficient of each sphere in this force pass (scratch)
+  PairIsa isa_ = best_pair_isa();  // the drag coefficients' instruction set
+  OldTorque torque_old_;           // torques of the previous sub-step
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
   int n_groups_ = 0;
   double dt_ = 0;
