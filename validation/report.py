@@ -128,7 +128,7 @@ def same_command(recorded, cmd):
     return True
 
 
-def execute(run, sphdem, runs_dir, reuse, nice):
+def execute(run, sphdem, runs_dir, reuse, nice, env=None):
     out_dir = os.path.join(runs_dir, run.key)
     cmd = run.command(sphdem, out_dir)
     stamp = os.path.join(out_dir, "report_run.json")
@@ -147,7 +147,7 @@ def execute(run, sphdem, runs_dir, reuse, nice):
     print(f"[report] run {run.key}: {' '.join(shlex.quote(c) for c in cmd)}", flush=True)
     t0 = time.perf_counter()
     with open(os.path.join(out_dir, "sphdem.out"), "w") as fh:
-        rc = subprocess.call(full, stdout=fh, stderr=subprocess.STDOUT)
+        rc = subprocess.call(full, stdout=fh, stderr=subprocess.STDOUT, env=env)
     wall = time.perf_counter() - t0
     json.dump({"cmd": cmd, "wall": wall, "returncode": rc, "case_sha256": case_sha}, open(stamp, "w"))
     print(f"[report]   {run.key}: exit {rc}, {wall:.1f} s", flush=True)
@@ -167,6 +167,7 @@ class Row:
         self.simulated, self.error, self.target, self.note = simulated, error, target, note
         self.resolution = result.resolution() if result is not None and result.case else "–"
         self.wall = result.wall if result is not None else None
+        self.result = result  # the run the row reads (sweep.py reads its log)
         self.skip = skip
         self.ratio = ratio   # error is simulated / limit (shown as a ratio, passes when <= target)
         if skip:
