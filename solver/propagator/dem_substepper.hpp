@@ -59,6 +59,10 @@ class DemSubstepper {
   // pass, then add V (g - g_kept) to the force and acceleration of the last sub-step.
   void keep_pressure_gradient();
   void switch_pressure_force();
+  // The g kept by the last keep_pressure_gradient, axis 0-2 (tests).
+  const std::vector<double>& kept_pressure_gradient(int axis) const {
+    return axis == 0 ? g_old_x_ : axis == 1 ? g_old_y_ : g_old_z_;
+  }
   void clear_mean_force();
 
  private:
