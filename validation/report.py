@@ -162,7 +162,7 @@ class Row:
     target is the largest |error| allowed, None for a row that only informs."""
 
     def __init__(self, scene, quantity, reference, source, simulated, error, target,
-                 result=None, note="", skip=None, ratio=False, known=None):
+                 result=None, note="", skip=None, ratio=False, known=None, count=False):
         self.scene, self.quantity, self.reference, self.source = scene, quantity, reference, source
         self.simulated, self.error, self.target, self.note = simulated, error, target, note
         self.resolution = result.resolution() if result is not None and result.case else "–"
@@ -170,6 +170,7 @@ class Row:
         self.result = result  # the run the row reads (sweep.py reads its log)
         self.skip = skip
         self.ratio = ratio   # error is simulated / limit (shown as a ratio, passes when <= target)
+        self.count = count   # error is a count (shown as one, passes when <= target)
         if skip:
             self.status = "SKIP"
         elif error is None or not math.isfinite(error):
@@ -184,6 +185,26 @@ class Row:
         if self.status == "FAIL" and known and error is not None and math.isfinite(error):
             self.status = "MISS"
             self.note = (self.note + "; " if self.note else "") + "target missed: " + known
+
+
+def safeguard_rows(scene, results):
+    """Every run's safeguards, read from its log.csv: the voidage floor (fluid particles
+    whose voidage was raised to it) and the Omega clamp (terms bounded), largest count in
+    a logged evaluation, target none (a safeguard that bites replaces the model); and the
+    largest density error, informative against the weakly compressible 1 %."""
+    rows = []
+    for key, r in results.items():
+        if not r.ok or r.log is None or "voidage_clamped" not in r.log:
+            continue
+        floor, clamp = int(np.max(r.log["voidage_clamped"])), int(np.max(r.log["omega_bounded"]))
+        rows.append(Row(scene, f"{key}: voidage floor and Ω clamp hits, largest count in a logged step", "0",
+                        "safeguards (physics.md §1), not models", f"{floor} floor, {clamp} clamp",
+                        float(floor + clamp), 0.0, r, count=True))
+        rho = float(np.max(r.log["max_density_error"]))
+        rows.append(Row(scene, f"{key}: largest density error |ρ/ρ₀ − 1| over the run", "1 %",
+                        "weakly compressible limit (c0 ≥ 10 u_max)", f"{100 * rho:.2f} %", rho / 0.01, None, r,
+                        ratio=True))
+    return rows
 
 
 def failed_run_rows(scene, result, what):
@@ -1345,6 +1366,8 @@ def machine():
 def fmt_err(row):
     if row.error is None or not math.isfinite(row.error):
         return "–"
+    if row.count:
+        return f"{row.error:.0f}"
     if row.ratio:
         return f"{row.error:.3g} × limit"
     return f"{100 * row.error:+.2f} %"
@@ -1353,6 +1376,8 @@ def fmt_err(row):
 def fmt_target(row):
     if row.target is None:
         return "–"
+    if row.count:
+        return f"≤ {row.target:.0f}"
     return f"≤ {row.target:g} × limit" if row.ratio else f"≤ {100 * row.target:.3g} %"
 
 
@@ -1437,6 +1462,7 @@ def main():
             rows += scene.evaluate(results, ctx)
         except Exception as e:  # a broken evaluation is a failed row, not a crash of the report
             rows.append(Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0))
+        rows += safeguard_rows(scene.name, results)
     total = time.perf_counter() - t_start
     if args.reuse:  # the runs' own wall times as recorded, not this re-evaluation's
         total = run_wall
