@@ -110,7 +110,7 @@ def run_point(index, values, scene, args, sphdem, env):
         rows = scene.evaluate(results, ctx)
     except Exception as e:  # noqa: BLE001  a broken evaluation is a failed row
         rows = [report.Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0)]
-    return label, results, rows
+    return label, results, rows + report.safeguard_rows(scene.name, results)
 
 
 def worst_score(rows):
