@@ -1,5 +1,6 @@
 // The effective viscosity of the SPH fluid, measured (physics.md §1): a shear wave
 // u_x = U sin(2 pi y / L) must decay as exp(-nu (2 pi / L)^2 t) with nu = mu / rho_f.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,16 +18,23 @@ namespace {
 // the particles between 3.0 and 6.4 mm: the no-slip wall's boundary layer, of width
 // 2 sqrt(nu t) <= 1.4 mm here, stays below 1 % there (erfc(3.0/1.4) = 0.002), and the
 // top 0.8 mm, where the free surface truncates the kernel, is left out too.
-double measured_viscosity(double alpha_artificial) {
-  const std::string yaml = R"(
+// The fit runs over [t0, t1] in units of the decay time 1/(nu k^2).
+struct ShearWave {
+  double viscosity = 0.02, sound_speed = 1.0, alpha_artificial = 0.0;
+  double t0 = 0.1, t1 = 0.8;
+};
+
+double measured_viscosity(const ShearWave& w) {
+  const std::string yaml = fmt::format(R"(
 name: shear_wave
-domain: {size: [0.0016, 0.0048, 0.0072]}
+domain: {{size: [0.0016, 0.0048, 0.0072]}}
 gravity: [0, 0, 0]
-fluid: {density: 1000, viscosity: 0.02, spacing: 2.0e-4, sound_speed: 1.0, alpha_artificial: )" +
-                           std::to_string(alpha_artificial) + R"(}
-startup: {relax_steps: 0}
-time: {end: 1.0}
-)";
+fluid: {{density: 1000, viscosity: {}, spacing: 2.0e-4, smoothing_factor: 1.5, sound_speed: {},
+        alpha_artificial: {}}}
+startup: {{relax_steps: 0}}
+time: {{end: 10.0}}
+)",
+                                       w.viscosity, w.sound_speed, w.alpha_artificial);
   const Scene sc = load_scene_text(yaml, "shear_wave.yaml");
   Simulation sim(sc);
   const double L = sc.box.length(1), k = 2.0 * M_PI / L, U = 1e-3;
@@ -47,9 +55,9 @@ time: {end: 1.0}
   };
   double st = 0, sl = 0, stt = 0, stl = 0;
   int n = 0;
-  while (sim.time() < 0.8 * tau) {
+  while (sim.time() < w.t1 * tau) {
     sim.step();
-    if (sim.time() < 0.1 * tau) continue;
+    if (sim.time() < w.t0 * tau) continue;
     const double t = sim.time(), l = std::log(amplitude());
     st += t;
     sl += l;
@@ -65,14 +73,16 @@ time: {end: 1.0}
 
 TEST(Viscosity, ShearWaveDecaysWithThePhysicalViscosity) {
   const double nu = 0.02 / 1000.0;
-  const double nu0 = measured_viscosity(0.0);
+  const double nu0 = measured_viscosity({});
   std::printf("Morris viscosity: measured nu = %.4g m^2/s, mu/rho_f = %.4g (%+.2f %%)\n", nu0, nu,
               100 * (nu0 / nu - 1));
   // The Morris term is a consistent second-derivative estimate whose error grows as
   // (k h)^2; with 24 particles per wavelength (k h = 0.39) it is ~1 %.
   EXPECT_NEAR(nu0 / nu, 1.0, 0.03);
 
-  const double nu_a = measured_viscosity(0.1);
+  ShearWave artificial;
+  artificial.alpha_artificial = 0.1;
+  const double nu_a = measured_viscosity(artificial);
   std::printf("with alpha_artificial = 0.1: nu = %.4g m^2/s (%+.2f %% over mu/rho_f)\n", nu_a,
               100 * (nu_a / nu - 1));
   // Monaghan's term acts only on approaching pairs; for alpha = 0.1, c0 = 1 m/s and
@@ -80,4 +90,34 @@ TEST(Viscosity, ShearWaveDecaysWithThePhysicalViscosity) {
   // nu); in a shear wave about half the pairs approach, so it adds a positive share.
   EXPECT_GT(nu_a, nu0);
   EXPECT_LT(nu_a, nu0 + 3e-6);
+}
+
+// Water at the resolution and sound speed of the 6 mm scenes (dx = 0.2 mm, h = 1.5 dx,
+// c0 = 3.431 m/s: single_particle, block_monodisperse, suspension_monodisperse): the
+// Morris term alone gives water's viscosity (to the 5 % of issue 14's matrix); with
+// those cases' alpha_artificial = 0.02 the Monaghan term adds a share of its
+// full-strength equivalent alpha h c0 / 10 = 2.06e-6 m^2/s (2.3 x water's) — the share a
+// shear wave brings out is measured and printed (bench/TRADEOFF.md), and must lie
+// between none and all of it. The fit covers 0.05-0.3 decay times (0.04-0.2 s), where
+// the wall's boundary layer (2 sqrt(nu t) <= 1.6 mm) stays below the fitted band.
+TEST(Viscosity, WaterAtTheSixMillimetreCasesResolution) {
+  const double nu = 8.9e-4 / 1000.0, c0 = 3.431, h = 1.5 * 2.0e-4;
+  ShearWave water;
+  water.viscosity = 8.9e-4;
+  water.sound_speed = c0;
+  water.t0 = 0.05;
+  water.t1 = 0.3;
+  const double nu0 = measured_viscosity(water);
+  ShearWave cases = water;
+  cases.alpha_artificial = 0.02;
+  const double nu_a = measured_viscosity(cases);
+  const double full = 0.02 * h * c0 / 10.0;
+  std::printf(
+      "water, dx = 0.2 mm, c0 = %.4g m/s: Morris alone nu = %.4g m^2/s (%+.2f %% of mu/rho_f); "
+      "with alpha = 0.02 nu = %.4g m^2/s (%.2f x mu/rho_f; the Monaghan part %.3g = %.2f of alpha "
+      "h c0/10)\n",
+      c0, nu0, 100 * (nu0 / nu - 1), nu_a, nu_a / nu, nu_a - nu0, (nu_a - nu0) / full);
+  EXPECT_NEAR(nu0 / nu, 1.0, 0.05);
+  EXPECT_GT(nu_a - nu0, 0.0);
+  EXPECT_LT(nu_a - nu0, full);
 }
