@@ -190,7 +190,7 @@ class Row:
 def safeguard_rows(scene, results):
     """Every run's safeguards, read from its log.csv: the voidage floor (fluid particles
     whose voidage was raised to it) and the Omega clamp (terms bounded), largest count in
-    a logged evaluation, target none (a safeguard that bites replaces the model); and the
+    a logged evaluation, target 0 (a safeguard that bites replaces the model); and the
     largest density error, informative against the weakly compressible 1 %."""
     rows = []
     for key, r in results.items():

@@ -4,7 +4,6 @@
 // before any header that calls them.
 extern "C" {
 __attribute__((simd("notinbranch"))) double exp(double) noexcept;
-__attribute__((simd("notinbranch"))) double log(double) noexcept;
 __attribute__((simd("notinbranch"))) double log10(double) noexcept;
 __attribute__((simd("notinbranch"))) double pow(double, double) noexcept;
 }
