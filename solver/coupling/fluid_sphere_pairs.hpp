@@ -7,6 +7,9 @@
 // interpolation at the spheres (2.69, 2.72: the same W, since W_ja(h_a) is the fluid
 // particle's kernel), the reaction (2.71) and the variational pressure coupling, so each
 // pair costs one distance and one kernel evaluation per step instead of four.
+// The drag's kernel (coupling.drag_kernel_scale, at most sphere_kernel_scale) may be
+// narrower: then each entry also carries W(r_aj, H^drag_a), and the fields the drag
+// reads (voidage, fluid velocity at the spheres) and the reaction use it.
 #include <cstdint>
 #include <vector>
 
@@ -27,7 +30,13 @@ struct FluidSpherePairs {
   std::vector<std::uint32_t> sphere;  // per entry: the sphere's index, row by row as list
   std::vector<double> w;              // W(r_aj, H_a) per entry within the support
   std::vector<double> grad;           // grad_a W_aj = grad * (x_a - x_j) (evaluate with_gradient)
+  std::vector<double> w_drag;         // W(r_aj, H^drag_a) per entry, only when drag_apart()
   double scale = 1.0;  // H_a / h_a of the mobile fluid (scene key coupling.sphere_kernel_scale)
+  double drag_scale = 1.0;  // H^drag_a / h_a (coupling.drag_kernel_scale), <= scale
+
+  bool drag_apart() const { return drag_scale != scale; }
+  // The kernel values the drag's fields and the reaction use.
+  const std::vector<double>& drag_w() const { return drag_apart() ? w_drag : w; }
 
   // Entries [begin(a), end(a)) of row a are the spheres within 2 H_a.
   std::uint32_t begin(std::size_t a) const { return list.offset[a]; }
@@ -41,19 +50,23 @@ struct FluidSpherePairs {
   double inv_kernel_h(const FluidParticles& f, std::size_t a) const {
     return f.kind[a] == kWall ? f.inv_h[a] : f.inv_h[a] / scale;
   }
+  double inv_drag_kernel_h(const FluidParticles& f, std::size_t a) const {
+    return f.kind[a] == kWall ? f.inv_h[a] : f.inv_h[a] / drag_scale;
+  }
 
   // The Verlet list: spheres binned in dem_cells (owned + halo) within rc of each owned
-  // SPH particle; rc >= 2 scale max h, up to dem_cells.max_cutoff().
+  // SPH particle; rc >= 2 scale max h, up to dem_cells.max_cutoff(). drag_kernel_scale
+  // <= kernel_scale (0: the same).
   void build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale,
-                  double rc);
+                  double rc, double drag_kernel_scale = 0.0);
   // Kernel values at the current positions (every step); the gradient factors only
   // with_gradient (the variational pressure coupling reads them).
   void evaluate(const FluidParticles& f, const DemParticles& s, bool with_gradient = true,
                 PairIsa isa = best_pair_isa());
   // Both, at the cells' cut-off (tests).
   void build(const FluidParticles& f, const DemParticles& s, const CellList& dem_cells,
-             double kernel_scale = 1.0) {
-    build_list(f, dem_cells, kernel_scale, dem_cells.max_cutoff());
+             double kernel_scale = 1.0, double drag_kernel_scale = 0.0) {
+    build_list(f, dem_cells, kernel_scale, dem_cells.max_cutoff(), drag_kernel_scale);
     evaluate(f, s);
   }
 };

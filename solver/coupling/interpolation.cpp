@@ -4,12 +4,15 @@
 
 namespace sphdem {
 
-void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, const FluidSpherePairs& pairs,
-                                  const std::vector<std::uint32_t>& halo_source, PairAccumulator& acc) {
+void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f,
+                                  const FluidSpherePairs& pairs,
+                                  const std::vector<std::uint32_t>& halo_source,
+                                  PairAccumulator& acc) {
   const std::size_t ns = s.n_owned;
   const long nf = static_cast<long>(f.n_owned);
   enum { kS, kEps, kUx, kUy, kUz, kGx, kGy, kGz, kDs, kDw, kFields };
   acc.reset(ns, kFields);
+  const std::vector<double>& weights = pairs.drag_w();  // the drag's kernel
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
@@ -19,13 +22,13 @@ void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, cons
       if (f.kind[b] != kFluid) continue;
       const double mb = f.mass[b], vb = mb / f.rho[b];
       for (std::uint32_t k = pairs.begin(b); k < pairs.end(b); ++k) {
-        const double w = pairs.w[k];
+        const double w = weights[k];
         const std::uint32_t j = pairs.sphere[k];
         const std::uint32_t owner = j < ns ? j : halo_source[j - ns];
         double* r = acc.row(t, owner);
         const double vw = vb * w, mw = mb * w;
         r[kS] += vw;
-        r[kEps] += vw * f.eps[b];
+        r[kEps] += vw * f.eps_drag[b];
         r[kUx] += vw * f.vx[b];
         r[kUy] += vw * f.vy[b];
         r[kUz] += vw * f.vz[b];

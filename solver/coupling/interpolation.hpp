@@ -10,7 +10,9 @@
 namespace sphdem {
 
 // Fluid fields at every owned sphere j, from the mobile fluid particles b, Shepard-
-// normalised with S_j = sum_b (m_b/rho_b) W_jb(h_b)                      (2.72):
+// normalised with S_j = sum_b (m_b/rho_b) W_jb(h_b)                      (2.72),
+// W the drag's kernel (FluidSpherePairs::drag_w, eps_drag; the spheres' kernel unless
+// coupling.drag_kernel_scale sets it apart):
 //   (-grad P + div tau)_j = sum_b m_b theta_b W_jb(h_b) / S_j          (2.69)
 //   u_f,j = sum_b (m_b/rho_b) u_b W_jb / S_j,  eps_j likewise          (for 2.74)
 //   and the local Sauter mean diameter (2.80) for the polydisperse drag
@@ -18,7 +20,9 @@ namespace sphdem {
 // its owner (halo_source maps halo index - n_owned to the owned index), which is the
 // same sum over periodic images. A sphere with no fluid neighbour (above the free
 // surface) gets S_j = 0, eps_j = 1 and no fluid force.
-void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f, const FluidSpherePairs& pairs,
-                                  const std::vector<std::uint32_t>& halo_source, PairAccumulator& scratch);
+void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f,
+                                  const FluidSpherePairs& pairs,
+                                  const std::vector<std::uint32_t>& halo_source,
+                                  PairAccumulator& scratch);
 
 }  // namespace sphdem

@@ -13,7 +13,7 @@ template <bool kLanes>
 inline void reaction_rows(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
                           std::size_t lo, std::size_t hi) {
   const std::uint32_t* __restrict sphere = pairs.sphere.data();
-  const double* __restrict w = pairs.w.data();
+  const double* __restrict w = pairs.drag_w().data();  // as the interpolation's S_j
   const double* __restrict shepard = s.shepard.data();
   const double* __restrict fmx = s.fmx.data();
   const double* __restrict fmy = s.fmy.data();

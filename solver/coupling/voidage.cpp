@@ -16,12 +16,13 @@ struct SolidSums {
 };
 
 template <bool kLanes>
-inline SolidSums solid_sums(const DemParticles& s, const FluidSpherePairs& pairs, std::size_t a,
+inline SolidSums solid_sums(const DemParticles& s, const FluidSpherePairs& pairs,
+                            const std::vector<double>& weights, std::size_t a,
                             const BigSpheresSmoothedApart* big) {
   double solid = 0.0, solid_over_d = 0.0;
   if constexpr (kLanes) {
     const std::uint32_t* __restrict sphere = pairs.sphere.data();
-    const double* __restrict w = pairs.w.data();
+    const double* __restrict w = weights.data();
     const double* __restrict radius = s.radius.data();
 #pragma omp simd reduction(+ : solid, solid_over_d)
     for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {
@@ -34,7 +35,7 @@ inline SolidSums solid_sums(const DemParticles& s, const FluidSpherePairs& pairs
     for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {
       const std::uint32_t j = pairs.sphere[k];
       if (big && big->is_big[s.species[j]]) continue;  // smoothed apart (3.8)
-      const double vw = s.volume(j) * pairs.w[k];
+      const double vw = s.volume(j) * weights[k];
       solid += vw;
       solid_over_d += vw / (2.0 * s.radius[j]);
     }
@@ -42,27 +43,44 @@ inline SolidSums solid_sums(const DemParticles& s, const FluidSpherePairs& pairs
   return {solid, solid_over_d};
 }
 
-// eps_a (2.50), clamped to the floor, and the Sauter mean (2.80) for rows [lo, hi).
+// 1 - the solid fraction, clamped to the floor (counted in clamped).
+inline double floored_voidage(double solid, double eps_floor, std::size_t& clamped) {
+  const double eps = 1.0 - solid;
+  if (eps >= eps_floor) return eps;
+  ++clamped;
+  return eps_floor;
+}
+
+// eps_a (2.50), clamped to the floor, and the Sauter mean (2.80) for rows [lo, hi); with
+// the drag's kernel apart, eps_drag_a and the Sauter mean from that kernel, else copies.
 template <bool kLanes>
 inline std::size_t voidage_rows(FluidParticles& f, const DemParticles& s,
                                 const FluidSpherePairs& pairs, double eps_floor,
                                 const BigSpheresSmoothedApart* big, std::size_t lo,
                                 std::size_t hi) {
   std::size_t clamped = 0;
+  const bool apart = pairs.drag_apart();
   for (std::size_t a = lo; a < hi; ++a) {
-    auto [solid, solid_over_d] = solid_sums<kLanes>(s, pairs, a, big);
+    auto [solid, solid_over_d] = solid_sums<kLanes>(s, pairs, pairs.w, a, big);
     if (big) {  // (3.10)
       solid += big->solid[a];
       solid_over_d += big->solid_over_d[a];
     }
+    f.eps[a] = floored_voidage(solid, eps_floor, clamped);
+    if (apart) {
+      auto [drag_solid, drag_solid_over_d] = solid_sums<kLanes>(s, pairs, pairs.w_drag, a, big);
+      if (big) {
+        drag_solid += big->solid[a];
+        drag_solid_over_d += big->solid_over_d[a];
+      }
+      solid = drag_solid;
+      solid_over_d = drag_solid_over_d;
+      f.eps_drag[a] = floored_voidage(solid, eps_floor, clamped);
+    } else {
+      f.eps_drag[a] = f.eps[a];
+    }
     // Sauter mean (sum_i x_i / d_i)^-1 with the kernel-weighted volume fractions x_i (2.80)
     f.d_sauter[a] = solid_over_d > 0.0 ? solid / solid_over_d : 0.0;
-    double eps = 1.0 - solid;
-    if (eps < eps_floor) {
-      eps = eps_floor;
-      ++clamped;
-    }
-    f.eps[a] = eps;
   }
   return clamped;
 }

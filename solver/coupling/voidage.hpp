@@ -22,7 +22,9 @@ struct BigSpheresSmoothedApart {
 //   eps_a = 1 - sum_j V_j W(r_a - r_j, h_a)   (2.50),
 // and the local Sauter mean diameter of the solids, sum_j V_j W / sum_j (V_j/d_j) W (2.80).
 // eps is clamped to eps_floor (default 0.3): the kernel estimate can undershoot in a
-// dense sediment; returns how many particles were clamped (logged per step).
+// dense sediment; returns how many particles were clamped (logged per step). The voidage
+// the drag reads, eps_drag, is the same sum with the drag's kernel when pairs.drag_apart()
+// (its clamps counted too), else eps; the Sauter mean is the drag's.
 std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s,
                                   const FluidSpherePairs& pairs, double eps_floor,
                                   const BigSpheresSmoothedApart* big = nullptr,

@@ -217,7 +217,8 @@ void Simulation::build_sphere_pairs() {
   szp_.assign(s.z.begin(), s.z.begin() + s.n_owned);
   const double cut = fluid_sphere_cutoff();
   sphere_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cut, 2);
-  sphere_pairs_.build_list(fluid_, sphere_cells_, params_.coupling.sphere_kernel_scale, cut);
+  sphere_pairs_.build_list(fluid_, sphere_cells_, params_.coupling.sphere_kernel_scale, cut,
+                           params_.coupling.drag_kernel_scale);
 }
 
 double Simulation::fluid_sphere_cutoff() const {

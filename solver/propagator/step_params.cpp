@@ -33,6 +33,7 @@ StepParams compile_step_params(const Scene& scene) {
   CouplingParams& c = p.coupling;
   c.variational = variational;
   c.sphere_kernel_scale = scene.sphere_kernel_scale;
+  c.drag_kernel_scale = scene.drag_kernel_scale;
   c.voidage_floor = scene.voidage_floor;
   c.double_smoothing = scene.double_smoothing.enabled;
   if (c.double_smoothing) {

@@ -31,6 +31,7 @@ struct FluidStepParams {
 struct CouplingParams {
   bool variational = false;        // coupling.pressure_coupling
   double sphere_kernel_scale = 1;  // H / h of the spheres' kernel
+  double drag_kernel_scale = 1;    // H_drag / h of the drag's kernel (<= the spheres')
   double voidage_floor = 0.3;
   bool double_smoothing = false;  // (3.8-3.10)
   double big_h_over_d = 1.5;

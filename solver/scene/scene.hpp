@@ -132,6 +132,12 @@ struct DoubleSmoothingSpec {
 //    through the fluid particles: with the variational coupling a 2.8 mm grain's extra
 //    drag, -8.3 % at c0 = 34 m/s with 1, is -0.5 % with 1.5; the price is smoother
 //    voidage edges (cases/README.md).
+//  drag_kernel_scale H_drag/h (<= sphere_kernel_scale, default equal): the kernel the drag's
+//    fields are gathered with -- the voidage it reads (2.50 again, as eps_drag), the fluid
+//    velocity and the Shepard sums at the spheres (2.69, 2.72) -- and the reaction (2.71)
+//    spreads with. The fluid's own voidage and the variational pressure forces keep
+//    sphere_kernel_scale. The drag dissipates energy, so its kernel need not be the one
+//    the pressure forces derive from.
 enum class PressureCoupling { kInterpolated, kVariational };
 
 struct Scene {
@@ -150,6 +156,7 @@ struct Scene {
   PressureCoupling pressure_coupling = PressureCoupling::kInterpolated;
   bool hydrostatic_split = false;
   double sphere_kernel_scale = 1.0;  // H / h, see PressureCoupling
+  double drag_kernel_scale = 1.0;    // H_drag / h, see PressureCoupling
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;

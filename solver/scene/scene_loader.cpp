@@ -600,6 +600,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       r.fail(r.key("hydrostatic_split"),
              "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
     sc.sphere_kernel_scale = r.number("sphere_kernel_scale", 1.0, 1.0, 3.0);
+    sc.drag_kernel_scale =
+        r.number("drag_kernel_scale", sc.sphere_kernel_scale, 1.0, sc.sphere_kernel_scale);
     for (int d = 0; d < 2 && sc.fluid.enabled;
          ++d) {  // the spheres' halo reaches 2 H (with margin)
       const double reach =
@@ -853,7 +855,8 @@ std::string scene_to_yaml(const Scene& sc) {
     << YAML::Value
     << (sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated")
     << YAML::Key << "hydrostatic_split" << YAML::Value << sc.hydrostatic_split << YAML::Key
-    << "sphere_kernel_scale" << YAML::Value << sc.sphere_kernel_scale;
+    << "sphere_kernel_scale" << YAML::Value << sc.sphere_kernel_scale << YAML::Key
+    << "drag_kernel_scale" << YAML::Value << sc.drag_kernel_scale;
   if (sc.double_smoothing.enabled)
     e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species
       << YAML::Key << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;

@@ -22,6 +22,7 @@ struct FluidParticles {
   std::vector<double> drho;           // density rate, eq. 2.53
   std::vector<double> omega;          // grad-h term, eq. 2.54
   std::vector<double> eps;            // voidage, eq. 2.50
+  std::vector<double> eps_drag;       // the same with the drag's kernel (coupling.drag_kernel_scale)
   std::vector<double> d_sauter;       // local Sauter mean diameter of the solids (2.80); 0 if none
   std::vector<double> P, cs;          // pressure (2.58) and sound speed (2.59)
   std::vector<double> p_term;         // P / (Omega rho^2), the pressure term of (2.55)
@@ -38,7 +39,7 @@ struct FluidParticles {
     f("kind", kind); f("id", id);
     f("x", x); f("y", y); f("z", z); f("vx", vx); f("vy", vy); f("vz", vz);
     f("rho", rho); f("mass", mass); f("h", h); f("inv_h", inv_h); f("drho", drho); f("omega", omega);
-    f("eps", eps); f("d_sauter", d_sauter); f("P", P); f("cs", cs); f("p_term", p_term); f("thx", thx); f("thy", thy); f("thz", thz);
+    f("eps", eps); f("eps_drag", eps_drag); f("d_sauter", d_sauter); f("P", P); f("cs", cs); f("p_term", p_term); f("thx", thx); f("thy", thy); f("thz", thz);
     f("ax", ax); f("ay", ay); f("az", az); f("dt_limit", dt_limit);
   }
   void resize(std::size_t n) {

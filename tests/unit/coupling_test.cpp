@@ -32,7 +32,8 @@ struct Config {
   FluidSpherePairs pairs;
   PairAccumulator scratch;
   double cutoff = 0;
-  double kernel_scale = 1.0;  // coupling.sphere_kernel_scale: the spheres' kernel H = scale h
+  double kernel_scale = 1.0;       // coupling.sphere_kernel_scale: the spheres' kernel H = scale h
+  double drag_kernel_scale = 0.0;  // coupling.drag_kernel_scale (0: the same)
 };
 
 // The sphere halo (reaching the spheres' kernel, scale x the fluid cut-off), the sphere
@@ -47,15 +48,16 @@ void rebuild_sphere_side(Config& c) {
   c.sh.fill_positions(s.x.data(), s.y.data(), s.z.data());
   c.sh.fill(s.radius);
   c.scells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), sphere_cutoff, 2);
-  c.pairs.build(f, s, c.scells, c.kernel_scale);
+  c.pairs.build(f, s, c.scells, c.kernel_scale, c.drag_kernel_scale);
   compute_fluid_voidage(f, s, c.pairs, 0.05);
 }
 
 // A jittered fluid lattice (bottom layer = wall) and random spheres, some across
 // the periodic faces, with halos and cell lists built as Simulation does.
-void build(Config& c, int n_spheres, unsigned seed, double jitter = 0.1,
-           double kernel_scale = 1.0) {
+void build(Config& c, int n_spheres, unsigned seed, double jitter = 0.1, double kernel_scale = 1.0,
+           double drag_kernel_scale = 0.0) {
   c.kernel_scale = kernel_scale;
+  c.drag_kernel_scale = drag_kernel_scale;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const double dx = 2e-4, rho0 = 1000.0;
@@ -110,11 +112,14 @@ void build(Config& c, int n_spheres, unsigned seed, double jitter = 0.1,
 
 }  // namespace
 
-// Sum over fluid of m_a * (reaction acceleration) + sum over spheres of fm_j = 0.
+// Sum over fluid of m_a * (reaction acceleration) + sum over spheres of fm_j = 0, with the
+// drag's kernel the spheres' or apart from it (narrower). A conservation check: it holds
+// for any weights shared by the interpolation and the reaction.
 TEST(Coupling, ActionAndReactionCancelToRoundOff) {
-  for (unsigned seed : {1u, 2u, 3u}) {
+  for (unsigned seed : {1u, 2u, 3u, 4u}) {
     Config c;
-    build(c, 25, seed);
+    build(c, 25, seed, 0.1, seed == 4u ? 1.5 : 1.0, seed == 4u ? 1.0 : 0.0);
+    ASSERT_EQ(c.pairs.drag_apart(), seed == 4u);
     FluidParticles& f = c.f;
     DemParticles& s = c.s;
     interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch);
@@ -159,7 +164,7 @@ TEST(Coupling, ShepardInterpolationIsExactForConstants) {
     f.vx[a] = 0.25;
     f.vy[a] = -1.5;
     f.vz[a] = 3.0;
-    f.eps[a] = 0.8;
+    f.eps_drag[a] = 0.8;  // the voidage the drag reads
     f.thx[a] = 2.0;
     f.thy[a] = 0.0;
     f.thz[a] = 9.81;
@@ -172,6 +177,40 @@ TEST(Coupling, ShepardInterpolationIsExactForConstants) {
     EXPECT_NEAR(c.s.eps[j], 0.8, 1e-14);
     // (-grad P + div tau) = sum m theta W / S = rho_Shepard * theta; rho varies +-5 %
     EXPECT_NEAR(c.s.gz[j] / 9.81, c.s.gx[j] / 2.0, 1e-12);
+  }
+}
+
+// With the drag's kernel apart (sphere_kernel_scale 1.5, drag_kernel_scale 1), the fluid
+// keeps the wide voidage and everything the drag reads is what the narrow kernel alone
+// gives: eps_drag and the Sauter mean at the fluid particles, and the Shepard sum, the
+// voidage and the fluid velocity at the spheres.
+TEST(Coupling, DragKernelApartGathersWithTheNarrowKernel) {
+  Config apart, narrow, wide;
+  build(apart, 25, 9, 0.1, 1.5, 1.0);
+  build(narrow, 25, 9, 0.1, 1.0);
+  build(wide, 25, 9, 0.1, 1.5);
+  ASSERT_TRUE(apart.pairs.drag_apart());
+  ASSERT_FALSE(wide.pairs.drag_apart());
+  for (Config* c : {&apart, &narrow, &wide}) {  // two sizes, so the Sauter mean varies
+    for (std::size_t j = 0; j < c->s.n_owned; ++j) c->s.radius[j] = j % 2 ? 4e-5 : 7e-5;
+    c->sh.fill(c->s.radius);
+    compute_fluid_voidage(c->f, c->s, c->pairs, 0.05);
+  }
+  double eps_moved = 0;
+  for (std::size_t a = 0; a < apart.f.n_owned; ++a) {
+    EXPECT_NEAR(apart.f.eps_drag[a], narrow.f.eps[a], 1e-14) << a;
+    EXPECT_NEAR(apart.f.d_sauter[a], narrow.f.d_sauter[a], 1e-18) << a;
+    EXPECT_NEAR(apart.f.eps[a], wide.f.eps[a], 1e-14) << a;
+    eps_moved = std::max(eps_moved, std::abs(apart.f.eps[a] - apart.f.eps_drag[a]));
+  }
+  EXPECT_GT(eps_moved, 1e-3);  // the two voidages differ: the test can tell them apart
+  for (Config* c : {&apart, &narrow})
+    interpolate_fluid_at_spheres(c->s, c->f, c->pairs, c->sh.source(), c->scratch);
+  for (std::size_t j = 0; j < apart.s.n_owned; ++j) {
+    EXPECT_NEAR(apart.s.shepard[j] / narrow.s.shepard[j], 1.0, 1e-13) << j;
+    EXPECT_NEAR(apart.s.eps[j], narrow.s.eps[j], 1e-14) << j;
+    EXPECT_NEAR(apart.s.ufz[j], narrow.s.ufz[j], 1e-13) << j;
+    EXPECT_NEAR(apart.s.d_sauter[j], narrow.s.d_sauter[j], 1e-18) << j;
   }
 }
 
@@ -416,66 +455,73 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
 // reaction (2.71) over them are the sums over every sphere: all found here by brute force,
 // with either instruction set of the passes (sph/pair_isa.hpp).
 TEST(Coupling, PairPassesMatchBruteForceWithEitherInstructionSet) {
-  Config c;
-  build(c, 60, 11, 0.1, /*kernel_scale=*/1.5);
-  FluidParticles& f = c.f;
-  DemParticles& s = c.s;
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (std::size_t j = 0; j < s.size(); ++j) {  // halo copies need not match their owners here
-    s.fmx[j] = u(rng);
-    s.fmy[j] = u(rng);
-    s.fmz[j] = u(rng);
-    s.shepard[j] = j % 7 == 0 ? 0.0 : 1.0 + 0.5 * u(rng);  // some spheres see no fluid
-  }
-  std::vector<PairIsa> isas{PairIsa::kBaseline};
-  if (best_pair_isa() == PairIsa::kAvx512) isas.push_back(PairIsa::kAvx512);
-  for (PairIsa isa : isas) {
-    c.pairs.evaluate(f, s, true, isa);
-    compute_fluid_voidage(f, s, c.pairs, 0.0, nullptr, isa);
-    for (std::size_t a = 0; a < f.n_owned; ++a) f.ax[a] = f.ay[a] = f.az[a] = 0.0;
-    add_reaction_on_fluid(f, s, c.pairs, isa);
-    std::size_t pairs_seen = 0;
-    for (std::size_t a = 0; a < f.n_owned; ++a) {
-      const double inv_h = c.pairs.inv_kernel_h(f, a), H = 1.0 / inv_h;
-      std::vector<std::pair<std::uint32_t, double>> want, got;
-      double solid = 0.0, react[3] = {0, 0, 0}, react_abs = 0.0;
-      for (std::uint32_t j = 0; j < s.size(); ++j) {
-        const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];
-        const double r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 >= 4.0 * H * H) continue;
-        want.push_back({j, r2});
-        solid += 4.0 / 3.0 * M_PI * std::pow(s.radius[j], 3) * kernel::w(r2, H);
-        if (s.shepard[j] == 0.0) continue;
-        const double share = kernel::w(r2, H) / s.shepard[j];
-        react[0] += s.fmx[j] * share;
-        react[1] += s.fmy[j] * share;
-        react[2] += s.fmz[j] * share;
-        react_abs += (std::abs(s.fmx[j]) + std::abs(s.fmy[j]) + std::abs(s.fmz[j])) * share;
-      }
-      EXPECT_NEAR(f.eps[a], 1.0 - solid, 1e-13) << "fluid particle " << a;
-      if (f.kind[a] == kFluid) {
-        const double tol = 1e-13 * react_abs / f.rho[a];
-        EXPECT_NEAR(f.ax[a], -react[0] / f.rho[a], tol) << "fluid particle " << a;
-        EXPECT_NEAR(f.ay[a], -react[1] / f.rho[a], tol) << "fluid particle " << a;
-        EXPECT_NEAR(f.az[a], -react[2] / f.rho[a], tol) << "fluid particle " << a;
-      }
-      for (std::uint32_t k = c.pairs.begin(a); k < c.pairs.end(a); ++k)
-        got.push_back({c.pairs.sphere[k], 0.0});
-      ASSERT_EQ(got.size(), want.size()) << "fluid particle " << a;
-      std::sort(got.begin(), got.end());
-      for (std::size_t i = 0; i < want.size(); ++i)
-        ASSERT_EQ(got[i].first, want[i].first) << "fluid particle " << a;
-      for (std::uint32_t k = c.pairs.begin(a); k < c.pairs.end(a); ++k) {
-        const std::uint32_t j = c.pairs.sphere[k];
-        const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];
-        const double r2 = dx * dx + dy * dy + dz * dz;
-        EXPECT_NEAR(c.pairs.w[k], kernel::w(r2, H), 1e-13 * kernel::w(0.0, H));
-        EXPECT_NEAR(c.pairs.grad[k], kernel::grad_factor(r2, H),
-                    1e-13 * std::abs(kernel::grad_factor(0.25 * H * H, H)));
-        ++pairs_seen;
-      }
+  for (double drag_kernel_scale : {0.0, 1.0}) {  // the drag's kernel the spheres', or apart
+    Config c;
+    build(c, 60, 11, 0.1, /*kernel_scale=*/1.5, drag_kernel_scale);
+    FluidParticles& f = c.f;
+    DemParticles& s = c.s;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (std::size_t j = 0; j < s.size(); ++j) {  // halo copies need not match their owners here
+      s.fmx[j] = u(rng);
+      s.fmy[j] = u(rng);
+      s.fmz[j] = u(rng);
+      s.shepard[j] = j % 7 == 0 ? 0.0 : 1.0 + 0.5 * u(rng);  // some spheres see no fluid
     }
-    EXPECT_GT(pairs_seen, 10 * f.n_owned) << "the configuration should give every particle spheres";
+    std::vector<PairIsa> isas{PairIsa::kBaseline};
+    if (best_pair_isa() == PairIsa::kAvx512) isas.push_back(PairIsa::kAvx512);
+    for (PairIsa isa : isas) {
+      c.pairs.evaluate(f, s, true, isa);
+      compute_fluid_voidage(f, s, c.pairs, 0.0, nullptr, isa);
+      for (std::size_t a = 0; a < f.n_owned; ++a) f.ax[a] = f.ay[a] = f.az[a] = 0.0;
+      add_reaction_on_fluid(f, s, c.pairs, isa);
+      std::size_t pairs_seen = 0;
+      for (std::size_t a = 0; a < f.n_owned; ++a) {
+        const double inv_h = c.pairs.inv_kernel_h(f, a), H = 1.0 / inv_h;
+        const double Hd = 1.0 / c.pairs.inv_drag_kernel_h(f, a);
+        std::vector<std::pair<std::uint32_t, double>> want, got;
+        double solid = 0.0, drag_solid = 0.0, react[3] = {0, 0, 0}, react_abs = 0.0;
+        for (std::uint32_t j = 0; j < s.size(); ++j) {
+          const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];
+          const double r2 = dx * dx + dy * dy + dz * dz;
+          if (r2 >= 4.0 * H * H) continue;
+          want.push_back({j, r2});
+          solid += 4.0 / 3.0 * M_PI * std::pow(s.radius[j], 3) * kernel::w(r2, H);
+          drag_solid += 4.0 / 3.0 * M_PI * std::pow(s.radius[j], 3) * kernel::w(r2, Hd);
+          if (s.shepard[j] == 0.0) continue;
+          const double share = kernel::w(r2, Hd) / s.shepard[j];  // the reaction: the drag's W
+          react[0] += s.fmx[j] * share;
+          react[1] += s.fmy[j] * share;
+          react[2] += s.fmz[j] * share;
+          react_abs += (std::abs(s.fmx[j]) + std::abs(s.fmy[j]) + std::abs(s.fmz[j])) * share;
+        }
+        EXPECT_NEAR(f.eps[a], 1.0 - solid, 1e-13) << "fluid particle " << a;
+        EXPECT_NEAR(f.eps_drag[a], 1.0 - drag_solid, 1e-13) << "fluid particle " << a;
+        if (f.kind[a] == kFluid) {
+          const double tol = 1e-13 * react_abs / f.rho[a];
+          EXPECT_NEAR(f.ax[a], -react[0] / f.rho[a], tol) << "fluid particle " << a;
+          EXPECT_NEAR(f.ay[a], -react[1] / f.rho[a], tol) << "fluid particle " << a;
+          EXPECT_NEAR(f.az[a], -react[2] / f.rho[a], tol) << "fluid particle " << a;
+        }
+        for (std::uint32_t k = c.pairs.begin(a); k < c.pairs.end(a); ++k)
+          got.push_back({c.pairs.sphere[k], 0.0});
+        ASSERT_EQ(got.size(), want.size()) << "fluid particle " << a;
+        std::sort(got.begin(), got.end());
+        for (std::size_t i = 0; i < want.size(); ++i)
+          ASSERT_EQ(got[i].first, want[i].first) << "fluid particle " << a;
+        for (std::uint32_t k = c.pairs.begin(a); k < c.pairs.end(a); ++k) {
+          const std::uint32_t j = c.pairs.sphere[k];
+          const double dx = f.x[a] - s.x[j], dy = f.y[a] - s.y[j], dz = f.z[a] - s.z[j];
+          const double r2 = dx * dx + dy * dy + dz * dz;
+          EXPECT_NEAR(c.pairs.w[k], kernel::w(r2, H), 1e-13 * kernel::w(0.0, H));
+          EXPECT_NEAR(c.pairs.drag_w()[k], kernel::w(r2, Hd), 1e-13 * kernel::w(0.0, Hd));
+          EXPECT_NEAR(c.pairs.grad[k], kernel::grad_factor(r2, H),
+                      1e-13 * std::abs(kernel::grad_factor(0.25 * H * H, H)));
+          ++pairs_seen;
+        }
+      }
+      EXPECT_GT(pairs_seen, 10 * f.n_owned)
+          << "the configuration should give every particle spheres";
+    }
   }
 }
