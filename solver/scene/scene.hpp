@@ -150,7 +150,7 @@ struct Scene {
   std::vector<SpeciesSpec> species;
   std::vector<ParticleGroupSpec> particles;
   ContactSpec contact;
-  drag::DragLaw drag = drag::Stokes{};
+  drag::DragLaw drag = drag::DiFeliceDallavalle{};  // drag.law, default di_felice
   double voidage_floor = 0.3;
   DoubleSmoothingSpec double_smoothing;
   PressureCoupling pressure_coupling = PressureCoupling::kInterpolated;

@@ -552,7 +552,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   {
     MapReader r(top.child("drag"), "drag", file);
     const std::string law =
-        r.choice("law", "stokes", {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)});
+        r.choice("law", "di_felice", {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)});
     drag::drag_law_from_name(law, sc.drag);
     r.finish();
   }

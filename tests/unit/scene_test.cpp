@@ -310,7 +310,7 @@ TEST(SceneDefaults, EmptyTextGivesTheDefaults) {
   EXPECT_EQ(sc.contact.skin, 0.3);
   EXPECT_EQ(sc.contact.tangential.model, TangentialParams::Model::kNone);  // normal contact only
   EXPECT_EQ(sc.contact.rolling.model, RollingParams::Model::kNone);
-  EXPECT_EQ(drag::drag_law_name(sc.drag), "stokes");
+  EXPECT_EQ(drag::drag_law_name(sc.drag), "di_felice");  // a voidage function (issue 14)
   EXPECT_EQ(sc.voidage_floor, 0.3);
   EXPECT_EQ(sc.time.end, 0.02);
   EXPECT_EQ(sc.time.cfl, 0.25);
