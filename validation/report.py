@@ -19,6 +19,7 @@ import json
 import math
 import os
 import platform
+import re
 import shlex
 import subprocess
 import sys
@@ -70,6 +71,7 @@ class RunResult:
         case_path = os.path.join(out_dir, "case.yaml")
         self.case = yaml.safe_load(open(case_path)) if os.path.exists(case_path) else None
         self.interfaces = read_csv(os.path.join(out_dir, "insitu", "interfaces.csv"))
+        self.safeguards = read_safeguards(os.path.join(out_dir, "sphdem.out"))
 
     # resolved scene numbers
     def species(self, i=0):
@@ -111,6 +113,45 @@ def read_csv(path):
     return {h: np.array([float(r[i]) for r in body]) for i, h in enumerate(head)}
 
 
+SAFEGUARD_LINE = re.compile(
+    r"safeguards over (\d+) steps: voidage floor hit in (\d+) steps \(largest (\d+) particles, "
+    r"([0-9.eE+-]+) % of particle-steps\), Omega clamp hit in (\d+) steps \(largest (\d+) particles, "
+    r"([0-9.eE+-]+) % of particle-steps\)")
+
+
+def read_safeguards(path):
+    """The run's own count of its safeguards over every step (the line `sphdem run` prints at
+    its end, solver/run/safeguard_tally.hpp), or None for a run that did not finish."""
+    if not os.path.exists(path):
+        return None
+    m = None
+    for line in open(path, errors="replace"):
+        m = SAFEGUARD_LINE.search(line) or m
+    if m is None:
+        return None
+    g = m.groups()
+    return {"steps": int(g[0]), "floor_steps": int(g[1]), "floor_largest": int(g[2]),
+            "floor_share": float(g[3]), "clamp_steps": int(g[4]), "clamp_largest": int(g[5]),
+            "clamp_share": float(g[6])}
+
+
+def safeguards_hit(result):
+    """'' for a run whose safeguards never bit, else what bit (for the rows that read it)."""
+    sg = getattr(result, "safeguards", None)
+    if not sg or (sg["floor_steps"] == 0 and sg["clamp_steps"] == 0):
+        return ""
+    return (f"its run hit the voidage floor in {sg['floor_steps']} and the Ω clamp in "
+            f"{sg['clamp_steps']} of {sg['steps']} steps")
+
+
+def solver_identity(sphdem):
+    """What a reused run must share with this report: the sphdem executable's own bytes (it
+    links the solver statically, so any change of the solver's code changes them), and, for
+    the reader, the commit it was built at."""
+    with open(sphdem, "rb") as fh:
+        return hashlib.sha256(fh.read()).hexdigest()
+
+
 def same_command(recorded, cmd):
     """Whether a recorded run was made with this command. The scene file is compared by its
     path inside the repository and, when the recorded one still exists, by its content, so
@@ -133,15 +174,19 @@ def execute(run, sphdem, runs_dir, reuse, nice, env=None):
     cmd = run.command(sphdem, out_dir)
     stamp = os.path.join(out_dir, "report_run.json")
     case_sha = hashlib.sha256(open(run.case_path(), "rb").read()).hexdigest()
+    solver_sha = solver_identity(sphdem)
     if reuse and os.path.exists(stamp):
         meta = json.load(open(stamp))
-        # the scene file must be the one the run read: its hash, or (records made before
-        # the hash was kept) not modified since the run
-        same_case = (meta["case_sha256"] == case_sha if "case_sha256" in meta
-                     else os.path.getmtime(run.case_path()) <= os.path.getmtime(stamp))
-        if same_case and same_command(meta.get("cmd"), cmd):
-            print(f"[report] reuse {run.key} ({meta['wall']:.1f} s)", flush=True)
+        # reused only if the scene file (its hash) and the solver (the executable's hash)
+        # are the ones the run had; a record without either is run again
+        same = meta.get("case_sha256") == case_sha and meta.get("solver_sha256") == solver_sha
+        if same and same_command(meta.get("cmd"), cmd):
+            print(f"[report] reuse {run.key} ({meta['wall']:.1f} s, commit {meta.get('commit', '?')})", flush=True)
             return RunResult(run, out_dir, meta["wall"], meta["returncode"], cmd)
+        print(f"[report] not reusing {run.key}: "
+              + ("the solver changed" if meta.get("solver_sha256") != solver_sha else
+                 "the scene file changed" if meta.get("case_sha256") != case_sha else "another command"),
+              flush=True)
     os.makedirs(out_dir, exist_ok=True)
     full = (["nice", "-n", str(nice)] if nice else []) + cmd
     print(f"[report] run {run.key}: {' '.join(shlex.quote(c) for c in cmd)}", flush=True)
@@ -149,7 +194,8 @@ def execute(run, sphdem, runs_dir, reuse, nice, env=None):
     with open(os.path.join(out_dir, "sphdem.out"), "w") as fh:
         rc = subprocess.call(full, stdout=fh, stderr=subprocess.STDOUT, env=env)
     wall = time.perf_counter() - t0
-    json.dump({"cmd": cmd, "wall": wall, "returncode": rc, "case_sha256": case_sha}, open(stamp, "w"))
+    json.dump({"cmd": cmd, "wall": wall, "returncode": rc, "case_sha256": case_sha, "solver_sha256": solver_sha,
+               "commit": sh(["git", "rev-parse", "--short", "HEAD"]) or "?"}, open(stamp, "w"))
     print(f"[report]   {run.key}: exit {rc}, {wall:.1f} s", flush=True)
     return RunResult(run, out_dir, wall, rc, cmd)
 
@@ -188,23 +234,41 @@ class Row:
 
 
 def safeguard_rows(scene, results):
-    """Every run's safeguards, read from its log.csv: the voidage floor (fluid particles
-    whose voidage was raised to it) and the Omega clamp (terms bounded), largest count in
-    a logged evaluation, target 0 (a safeguard that bites replaces the model); and the
-    largest density error, informative against the weakly compressible 1 %."""
+    """Every run's safeguards: the voidage floor (fluid particles whose voidage was raised to
+    it) and the Omega clamp (terms bounded), from the count the run prints at its end over
+    every step (a run made before that line existed: the largest count in a logged step of
+    its log.csv), target 0 (a safeguard that bites replaces the model); and the largest
+    density error, informative against the weakly compressible 1 %."""
     rows = []
     for key, r in results.items():
         if not r.ok or r.log is None or "voidage_clamped" not in r.log:
             continue
-        floor, clamp = int(np.max(r.log["voidage_clamped"])), int(np.max(r.log["omega_bounded"]))
-        rows.append(Row(scene, f"{key}: voidage floor and Ω clamp hits, largest count in a logged step", "0",
-                        "safeguards (physics.md §1), not models", f"{floor} floor, {clamp} clamp",
-                        float(floor + clamp), 0.0, r, count=True))
+        sg = r.safeguards
+        if sg is not None:
+            floor, clamp = sg["floor_steps"], sg["clamp_steps"]
+            rows.append(Row(scene, f"{key}: voidage floor and Ω clamp, steps with a hit over every step", "0",
+                            "safeguards (physics.md §1), not models",
+                            f"{floor} floor, {clamp} clamp of {sg['steps']} steps (largest {sg['floor_largest']} "
+                            f"and {sg['clamp_largest']} particles)", float(floor + clamp), 0.0, r, count=True))
+        else:
+            floor, clamp = int(np.max(r.log["voidage_clamped"])), int(np.max(r.log["omega_bounded"]))
+            rows.append(Row(scene, f"{key}: voidage floor and Ω clamp hits, largest count in a logged step", "0",
+                            "safeguards (physics.md §1), not models", f"{floor} floor, {clamp} clamp",
+                            float(floor + clamp), 0.0, r, count=True))
         rho = float(np.max(r.log["max_density_error"]))
         rows.append(Row(scene, f"{key}: largest density error |ρ/ρ₀ − 1| over the run", "1 %",
                         "weakly compressible limit (c0 ≥ 10 u_max)", f"{100 * rho:.2f} %", rho / 0.01, None, r,
                         ratio=True))
     return rows
+
+
+def mark_safeguard_hits(rows):
+    """A row read from a run whose safeguards bit says so in its note (the safeguard rows
+    themselves say it in their value)."""
+    for row in rows:
+        hit = safeguards_hit(row.result) if row.result is not None else ""
+        if hit and "Ω clamp" not in row.quantity:
+            row.note = f"{row.note}; {hit}" if row.note else hit
 
 
 def failed_run_rows(scene, result, what):
@@ -1422,6 +1486,8 @@ def main():
     ap.add_argument("--scenes", nargs="*", help="only these scenes (default: all)")
     ap.add_argument("--reuse", action="store_true", help="re-read runs already made with the same command")
     ap.add_argument("--nice", type=int, default=10, help="nice level of the runs (0: none)")
+    ap.add_argument("--strict", action="store_true",
+                    help="exit non-zero on a missed target (MISS) too, not only on a failure")
     ap.add_argument("--check", action="store_true",
                     help="only `sphdem check` every run of the mode (validates the overrides, prints sizes)")
     args = ap.parse_args()
@@ -1463,6 +1529,7 @@ def main():
         except Exception as e:  # a broken evaluation is a failed row, not a crash of the report
             rows.append(Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0))
         rows += safeguard_rows(scene.name, results)
+    mark_safeguard_hits(rows)
     total = time.perf_counter() - t_start
     if args.reuse:  # the runs' own wall times as recorded, not this re-evaluation's
         total = run_wall
@@ -1473,9 +1540,19 @@ def main():
     for r in rows:
         print(f"{r.status:4s}  {r.scene:24s} {r.quantity:{width}s}  ref {r.reference:30s} sim {r.simulated:28s} "
               f"err {fmt_err(r):>9s} target {fmt_target(r)}")
-    n_fail = sum(r.status == "FAIL" for r in rows)
-    print(f"[report] {path}: {len(rows)} rows, {n_fail} failing, total wall {total:.0f} s")
-    return 1 if n_fail else 0
+    print(f"[report] {path}: {summary_line(rows)}; total wall {total:.0f} s")
+    return exit_status(rows, args.strict)
+
+
+def summary_line(rows):
+    n = {k: sum(r.status == k for r in rows) for k in ("PASS", "FAIL", "MISS", "INFO", "SKIP")}
+    return (f"{len(rows)} rows: {n['PASS']} pass, {n['FAIL']} fail, {n['MISS']} miss, "
+            f"{n['INFO']} informative, {n['SKIP']} skipped")
+
+
+def exit_status(rows, strict):
+    """1 on a failed row; with strict also on a missed target (MISS), else 0."""
+    return 1 if any(r.status == "FAIL" or (strict and r.status == "MISS") for r in rows) else 0
 
 
 if __name__ == "__main__":

@@ -77,7 +77,11 @@ def stability(result):
     """Figures of a run's log.csv that say whether it stayed stable (None when absent)."""
     log = result.log
     out = {"steps": None, "max_density_error": None, "voidage_clamped_max": None,
-           "omega_bounded_max": None, "ke_fluid_last_quarter_growth": None}
+           "omega_bounded_max": None, "voidage_floor_steps": None, "omega_clamp_steps": None,
+           "ke_fluid_last_quarter_growth": None}
+    sg = getattr(result, "safeguards", None)
+    if sg is not None:  # over every step, as the run counted them
+        out["voidage_floor_steps"], out["omega_clamp_steps"] = sg["floor_steps"], sg["clamp_steps"]
     if log is None:
         return out
     out["steps"] = int(log["step"][-1]) if "step" in log else None
@@ -110,7 +114,9 @@ def run_point(index, values, scene, args, sphdem, env):
         rows = scene.evaluate(results, ctx)
     except Exception as e:  # noqa: BLE001  a broken evaluation is a failed row
         rows = [report.Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0)]
-    return label, results, rows + report.safeguard_rows(scene.name, results)
+    rows += report.safeguard_rows(scene.name, results)
+    report.mark_safeguard_hits(rows)
+    return label, results, rows
 
 
 def worst_score(rows):
@@ -172,7 +178,7 @@ def main():
 
     csv_path = os.path.join(args.out, "sweep.csv")
     stab_keys = ["steps", "max_density_error", "voidage_clamped_max", "omega_bounded_max",
-                 "ke_fluid_last_quarter_growth"]
+                 "voidage_floor_steps", "omega_clamp_steps", "ke_fluid_last_quarter_growth"]
     summary = []
     failed_runs = 0
     with open(csv_path, "w", newline="") as fh:

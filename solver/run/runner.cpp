@@ -12,6 +12,7 @@
 #include "analysis/sediment_output.hpp"
 #include "propagator/simulation.hpp"
 #include "run/run_log.hpp"
+#include "run/safeguard_tally.hpp"
 
 namespace sphdem {
 
@@ -79,10 +80,12 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   double next_log = scene.output.log_interval;
   double dem_sphere_steps = 0;
   const double end = scene.time.end;
+  RunSummary r;
   while (sim.time() < end * (1.0 - 1e-12)) {
     const auto t_step = Clock::now();
     sim.step();
     step_seconds += since(t_step);
+    r.safeguards.add(sim.voidage_clamped(), sim.omega_bounded());
     dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
     const bool last = sim.time() >= end * (1.0 - 1e-12);
     if (sim.time() >= next_log * (1.0 - 1e-9) || last) {
@@ -102,7 +105,6 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     }
   }
   write_sediment_output(sim, opt.out_dir);
-  RunSummary r;
   r.steps = sim.step_count();
   r.step_seconds = step_seconds;
   r.hooks = opt.hooks;
@@ -123,6 +125,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
       *out << fmt::format("sphdem: {}: {:.2f} s, {:.1f} % of the step time\n", hk.name, hk.seconds,
                           100.0 * hk.seconds / std::max(step_seconds, 1e-30));
   }
+  if (out) *out << "sphdem: " << r.safeguards.describe(sim.fluid().n_owned) << "\n";
   if (out)
     *out << fmt::format("sphdem: done, {} steps to t = {:.4e} s in {} ({:.3g} SPH particle-steps/s)\n", r.steps,
                         r.simulated_time, format_duration(r.wall_seconds), r.fluid_particle_steps_per_second);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "run/safeguard_tally.hpp"
 #include "scene/scene.hpp"
 
 namespace sphdem {
@@ -34,6 +35,7 @@ struct RunSummary {
   double wall_seconds = 0;
   double fluid_particle_steps_per_second = 0;
   double sphere_particle_steps_per_second = 0;  // sphere sub-steps counted
+  SafeguardTally safeguards;                    // every step's floor and clamp counts
 };
 
 RunSummary run_scene(const Scene& scene, RunOptions options);

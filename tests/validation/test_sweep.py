@@ -4,7 +4,7 @@ The sweep varies the spheres' kernel width (coupling.sphere_kernel_scale 1 and 2
 the first 2 ms of the single-particle scene: the evaluator's rows must come out for both
 points with the parameters in their columns, the two points' slip errors must differ
 (the width moves the drag: a sweep that ignored --vary would give equal rows), and the
-stability columns must be read from each run's log.
+stability columns must be read from each run's log and its end-of-run safeguard line.
 """
 import csv
 import os
@@ -51,6 +51,10 @@ class SweepOfTheSingleSphere(unittest.TestCase):
                 self.assertGreater(int(r["steps"]), 0)
                 self.assertGreater(float(r["wall_s"]), 0.0)
                 self.assertLess(float(r["max_density_error"]), 0.05)
+                # the run's own count over every step (its end-of-run line): one sphere in
+                # clear water never reaches the voidage floor nor the Omega clamp
+                self.assertEqual(r["voidage_floor_steps"], "0")
+                self.assertEqual(r["omega_clamp_steps"], "0")
                 self.assertEqual(r["scene"], "single_particle")
 
 

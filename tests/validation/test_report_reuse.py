@@ -1,0 +1,119 @@
+"""validation/report.py: a run is reused only when the solver and the scene file are the
+ones it was made with; the safeguard line a run prints at its end is read and marks the
+rows of that run; --strict turns a missed target into a failing exit.
+
+A stand-in `sphdem` (a script that writes a log.csv, prints the safeguard line and counts
+its calls) takes the solver's place, so this runs in a second."""
+import os
+import shutil
+import stat
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "validation"))
+import report  # noqa: E402
+
+FAKE = """#!/bin/sh
+# stand-in sphdem: run CASE --out DIR ...
+out="$4"
+mkdir -p "$out"
+echo x >> "{calls}"
+printf 'time,step,voidage_clamped,omega_bounded,max_density_error\\n0,0,0,0,0.001\\n0.1,10,{floor},0,0.002\\n' > "$out/log.csv"
+echo "sphdem: safeguards over 10 steps: voidage floor hit in {floor} steps (largest {floor} particles, 1 % of particle-steps), Omega clamp hit in 0 steps (largest 0 particles, 0 % of particle-steps)"
+"""
+
+
+class Reuse(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, self.tmp)
+        self.repo = os.path.join(self.tmp, "repo")
+        os.makedirs(os.path.join(self.repo, "cases"))
+        self.case = os.path.join(self.repo, "cases", "scene.yaml")
+        open(self.case, "w").write("name: scene\n")
+        self.calls = os.path.join(self.tmp, "calls")
+        self.sphdem = os.path.join(self.tmp, "sphdem")
+        self.write_solver(floor=0)
+        self.old_repo, report.REPO = report.REPO, self.repo
+        self.addCleanup(setattr, report, "REPO", self.old_repo)
+        self.run_ = report.Run("scene_run", "cases/scene.yaml", {"time.end": 0.1})
+        self.runs_dir = os.path.join(self.tmp, "runs")
+
+    def write_solver(self, floor, comment=""):
+        open(self.sphdem, "w").write(FAKE.format(calls=self.calls, floor=floor) + comment)
+        os.chmod(self.sphdem, os.stat(self.sphdem).st_mode | stat.S_IXUSR)
+
+    def calls_made(self):
+        return len(open(self.calls).read().split()) if os.path.exists(self.calls) else 0
+
+    def execute(self):
+        return report.execute(self.run_, self.sphdem, self.runs_dir, reuse=True, nice=0)
+
+    def test_same_solver_and_scene_reuse(self):
+        self.execute()
+        self.execute()
+        self.assertEqual(self.calls_made(), 1)
+
+    def test_changed_solver_runs_again(self):
+        self.execute()
+        self.write_solver(floor=0, comment="# rebuilt\n")
+        self.execute()
+        self.assertEqual(self.calls_made(), 2)
+
+    def test_changed_scene_runs_again(self):
+        self.execute()
+        open(self.case, "a").write("# edited\n")
+        self.execute()
+        self.assertEqual(self.calls_made(), 2)
+
+    def test_record_without_solver_hash_runs_again(self):
+        import json
+        r = self.execute()
+        stamp = os.path.join(r.dir, "report_run.json")
+        meta = json.load(open(stamp))
+        del meta["solver_sha256"]
+        json.dump(meta, open(stamp, "w"))
+        self.execute()
+        self.assertEqual(self.calls_made(), 2)
+
+    def test_safeguard_line_read_and_rows_marked(self):
+        self.write_solver(floor=3)
+        r = self.execute()
+        self.assertEqual(r.safeguards["floor_steps"], 3)
+        self.assertEqual(r.safeguards["steps"], 10)
+        rows = [report.Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r)] + report.safeguard_rows("scene", {"k": r})
+        report.mark_safeguard_hits(rows)
+        self.assertIn("voidage floor in 3", rows[0].note)
+        floor_row = [x for x in rows if "Ω clamp" in x.quantity][0]
+        self.assertEqual(floor_row.status, "FAIL")       # target 0
+        self.assertNotIn("voidage floor in", floor_row.note)
+
+    def test_quiet_run_leaves_rows_alone(self):
+        r = self.execute()
+        rows = [report.Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r)]
+        report.mark_safeguard_hits(rows)
+        self.assertEqual(rows[0].note, "")
+
+
+class Strict(unittest.TestCase):
+    def rows(self, *statuses):
+        out = []
+        for s in statuses:
+            r = report.Row("scene", "q", "1", "src", "1", 0.0, 0.01)
+            r.status = s
+            out.append(r)
+        return out
+
+    def test_miss_fails_only_when_strict(self):
+        rows = self.rows("PASS", "MISS", "INFO")
+        self.assertEqual(report.exit_status(rows, strict=False), 0)
+        self.assertEqual(report.exit_status(rows, strict=True), 1)
+        self.assertEqual(report.exit_status(self.rows("PASS", "FAIL"), strict=False), 1)
+        self.assertEqual(report.summary_line(rows), "3 rows: 1 pass, 0 fail, 1 miss, 1 informative, 0 skipped")
+
+
+if __name__ == "__main__":
+    unittest.main()
