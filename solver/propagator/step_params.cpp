@@ -27,6 +27,8 @@ StepParams compile_step_params(const Scene& scene) {
   f.max_dt = scene.time.max_dt_sph;
   f.relax_steps = scene.startup.relax_steps;
   f.relax_damping = scene.startup.damping;
+  f.diffusion = DensityDiffusion{fs.density_diffusion, fs.sound_speed, f.eos, scene.gravity[2],
+                                 f.fill_height};
   if (scene.hydrostatic_split)
     f.split = HydrostaticPressure{f.eos.rho0, scene.gravity[2], f.fill_height};
 

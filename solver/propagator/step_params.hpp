@@ -9,6 +9,7 @@
 #include "dem/contact_registry.hpp"
 #include "domain/box.hpp"
 #include "scene/scene.hpp"
+#include "sph/density_diffusion.hpp"
 #include "sph/equation_of_state.hpp"
 #include "sph/hydrostatic_pressure.hpp"
 #include "sph/momentum.hpp"
@@ -26,6 +27,7 @@ struct FluidStepParams {
   int relax_steps = 0;             // start-up: fluid steps with the spheres held
   double relax_damping = 0;        // fraction of the fluid velocity removed per such step
   HydrostaticPressure split;       // split off by the variational coupling (zero without)
+  DensityDiffusion diffusion;      // delta-SPH (off unless fluid.density_diffusion > 0)
 };
 
 struct CouplingParams {

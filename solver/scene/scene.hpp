@@ -25,6 +25,7 @@ struct FluidSpec {
   double expected_speed = 0.0;     // u_m (m/s) for B, eq. 2.64; 0 = largest Stokes speed
   double sound_speed = 0.0;        // c0 (m/s); 0 = 10 max(u_m, sqrt(2 g H)) (physics.md §1)
   double alpha_artificial = 0.02;  // Monaghan alpha on approaching pairs only
+  double density_diffusion = 0.0;  // delta of the density diffusion (sph/density_diffusion.hpp)
   int gamma = 7;
   int wall_layers = 3;
   bool enabled = true;  // false: spheres only (dry DEM), no SPH particles

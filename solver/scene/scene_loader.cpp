@@ -365,6 +365,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     f.expected_speed = r.number("expected_speed", 0.0, 0.0, kInf);
     f.sound_speed = r.number("sound_speed", 0.0, 0.0, kInf);
     f.alpha_artificial = r.number("alpha_artificial", f.alpha_artificial, 0.0, 2.0);
+    f.density_diffusion = r.number("density_diffusion", f.density_diffusion, 0.0, 1.0);
     f.gamma = r.integer("gamma", f.gamma, 1, 7);
     const int min_layers = static_cast<int>(std::ceil(2.0 * f.smoothing_factor - 1e-9));
     f.wall_layers = r.integer("wall_layers", std::max(3, min_layers), min_layers, 8);
@@ -745,7 +746,8 @@ std::string scene_to_yaml(const Scene& sc) {
   e << YAML::Key << "fill_height" << YAML::Value << f.fill_height << YAML::Key << "expected_speed"
     << YAML::Value << f.expected_speed;
   e << YAML::Key << "sound_speed" << YAML::Value << f.sound_speed << YAML::Key << "alpha_artificial"
-    << YAML::Value << f.alpha_artificial;
+    << YAML::Value << f.alpha_artificial << YAML::Key << "density_diffusion" << YAML::Value
+    << f.density_diffusion;
   e << YAML::Key << "gamma" << YAML::Value << f.gamma << YAML::Key << "wall_layers" << YAML::Value
     << f.wall_layers;
   e << YAML::Key << "enabled" << YAML::Value << f.enabled;

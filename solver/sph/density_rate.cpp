@@ -16,12 +16,14 @@ namespace {
 // Zero beyond both supports (the list's skin).
 struct DensityTerms {
   double dwdh_a, div_a, dwdh_b, div_b;
+  double minus_f;  // -(F_a + F_b)/2, the diffusion's weight (density_diffusion.hpp)
 };
 inline DensityTerms density_terms(double r, double udotr, double inv_ha, double inv_hb, double ma,
                                   double mb) {
   const double qa = r * inv_ha, qb = r * inv_hb;
-  return {mb * kernel::dw_dh_q(qa, inv_ha), mb * kernel::grad_factor_q(qa, inv_ha) * udotr,
-          ma * kernel::dw_dh_q(qb, inv_hb), ma * kernel::grad_factor_q(qb, inv_hb) * udotr};
+  const double fa = kernel::grad_factor_q(qa, inv_ha), fb = kernel::grad_factor_q(qb, inv_hb);
+  return {mb * kernel::dw_dh_q(qa, inv_ha), mb * fa * udotr, ma * kernel::dw_dh_q(qb, inv_hb),
+          ma * fb * udotr, -0.5 * (fa + fb)};
 }
 
 inline double self_dwdh(const FluidParticles& f, long a) {  // the self term of (2.54)
@@ -30,6 +32,7 @@ inline double self_dwdh(const FluidParticles& f, long a) {  // the self term of 
 
 // Rows [lo, hi) of the half list, one pair at a time: the skin's entries are skipped, an
 // owned b gets its share at once.
+template <bool kDiffusion>
 void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, PairAccumulator& acc,
                            int t, long lo, long hi) {
   const auto n = static_cast<std::uint32_t>(f.n_owned);
@@ -37,7 +40,9 @@ void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, P
     const double ha = f.h[a], inv_ha = f.inv_h[a], ma = f.mass[a];
     const double xa = f.x[a], ya = f.y[a], za = f.z[a];
     const double vxa = f.vx[a], vya = f.vy[a], vza = f.vz[a];
-    double sum_dwdh = self_dwdh(f, a), sum_div = 0.0;
+    double sum_dwdh = self_dwdh(f, a), sum_div = 0.0, sum_diff = 0.0;
+    const double psi_a = kDiffusion ? f.diffusion_psi[a] : 0.0;
+    const double vol_a = kDiffusion ? f.diffusion_volume[a] : 0.0;
     for (std::uint32_t k = half.begin(a); k < half.end(a); ++k) {
       const std::uint32_t b = half.neighbour[k];
       const double dx = xa - f.x[b], dy = ya - f.y[b], dz = za - f.z[b];
@@ -48,23 +53,28 @@ void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, P
       const DensityTerms d = density_terms(std::sqrt(r2), udotr, inv_ha, f.inv_h[b], ma, f.mass[b]);
       sum_dwdh += d.dwdh_a;
       sum_div += d.div_a;
+      const double dpsi_f = kDiffusion ? (f.diffusion_psi[b] - psi_a) * d.minus_f : 0.0;
+      if constexpr (kDiffusion) sum_diff += dpsi_f * f.diffusion_volume[b];
       if (b < n) {  // the mirror pair, for the owned b
         double* rb = acc.row(t, b);
         rb[0] += d.dwdh_b;
         rb[1] += d.div_b;
+        if constexpr (kDiffusion) rb[2] -= dpsi_f * vol_a;
       }
     }
     double* ra = acc.row(t, a);
     ra[0] += sum_dwdh;
     ra[1] += sum_div;
+    if constexpr (kDiffusion) ra[2] += sum_diff;
   }
 }
 
 // The same rows, each row's pairs in eight lanes: b's shares are kept per entry and
 // scattered after the vectorised loop (a halo b's go to the spare row n); the skin's
 // entries are evaluated and come out zero.
-SPHDEM_TARGET_AVX512 void density_rows_avx512(const FluidParticles& f, const NeighbourList& half,
-                                              PairAccumulator& acc, int t, long lo, long hi) {
+template <bool kDiffusion>
+inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& half,
+                               PairAccumulator& acc, int t, long lo, long hi) {
   const auto n = static_cast<std::uint32_t>(f.n_owned);
   const double* __restrict x = f.x.data();
   const double* __restrict y = f.y.data();
@@ -74,16 +84,21 @@ SPHDEM_TARGET_AVX512 void density_rows_avx512(const FluidParticles& f, const Nei
   const double* __restrict vz = f.vz.data();
   const double* __restrict inv_h = f.inv_h.data();
   const double* __restrict mass = f.mass.data();
+  const double* __restrict psi = f.diffusion_psi.data();
+  const double* __restrict vol = f.diffusion_volume.data();
+  const std::size_t mirrors = kDiffusion ? 3 : 2;
   for (long a = lo; a < hi; ++a) {
     const double inv_ha = inv_h[a], ma = mass[a];
     const double xa = x[a], ya = y[a], za = z[a];
     const double vxa = vx[a], vya = vy[a], vza = vz[a];
+    const double psi_a = kDiffusion ? psi[a] : 0.0, vol_a = kDiffusion ? vol[a] : 0.0;
     const std::uint32_t* __restrict nb = half.neighbour.data() + half.begin(a);
     const std::uint32_t len = half.end(a) - half.begin(a);
-    double* __restrict mirror_dwdh = acc.entries(t, 2 * std::size_t{len});
+    double* __restrict mirror_dwdh = acc.entries(t, mirrors * std::size_t{len});
     double* __restrict mirror_div = mirror_dwdh + len;
-    double sum_dwdh = self_dwdh(f, a), sum_div = 0.0;
-#pragma omp simd reduction(+ : sum_dwdh, sum_div)
+    double* __restrict mirror_diff = mirror_div + len;
+    double sum_dwdh = self_dwdh(f, a), sum_div = 0.0, sum_diff = 0.0;
+#pragma omp simd reduction(+ : sum_dwdh, sum_div, sum_diff)
     for (std::uint32_t k = 0; k < len; ++k) {
       const std::uint32_t b = nb[k];
       const double dx = xa - x[b], dy = ya - y[b], dz = za - z[b];
@@ -94,34 +109,56 @@ SPHDEM_TARGET_AVX512 void density_rows_avx512(const FluidParticles& f, const Nei
       sum_div += d.div_a;
       mirror_dwdh[k] = d.dwdh_b;
       mirror_div[k] = d.div_b;
+      if constexpr (kDiffusion) {
+        const double dpsi_f = (psi[b] - psi_a) * d.minus_f;
+        sum_diff += dpsi_f * vol[b];
+        mirror_diff[k] = -dpsi_f * vol_a;
+      }
     }
     for (std::uint32_t k = 0; k < len; ++k) {
       double* rb = acc.row(t, std::min(nb[k], n));
       rb[0] += mirror_dwdh[k];
       rb[1] += mirror_div[k];
+      if constexpr (kDiffusion) rb[2] += mirror_diff[k];
     }
     double* ra = acc.row(t, a);
     ra[0] += sum_dwdh;
     ra[1] += sum_div;
+    if constexpr (kDiffusion) ra[2] += sum_diff;
   }
+}
+
+SPHDEM_TARGET_AVX512 void density_rows_avx512(const FluidParticles& f, const NeighbourList& half,
+                                              PairAccumulator& acc, int t, long lo, long hi,
+                                              bool diffusion) {
+  if (diffusion)
+    density_rows_lanes<true>(f, half, acc, t, lo, hi);
+  else
+    density_rows_lanes<false>(f, half, acc, t, lo, hi);
 }
 
 }  // namespace
 
 std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& acc,
                                  bool voidage_weighted_pressure, const HydrostaticPressure& ph,
-                                 PairIsa isa) {
+                                 const DensityDiffusion& dd, PairIsa isa) {
   const long n = static_cast<long>(f.n_owned);
-  acc.reset(n + 1, 2);  // per particle: sum_b m_b dW/dh, sum_b m_b u_ab . grad W; row n spare
+  const bool diffusion = dd.on();
+  // per particle: sum_b m_b dW/dh, sum_b m_b u_ab . grad W (and the diffusion's sum); row n
+  // spare
+  acc.reset(n + 1, diffusion ? 3 : 2);
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
     const auto [lo, hi] = thread_rows(half.offset, n, kPairRowCost);
     if (isa == PairIsa::kAvx512)
-      density_rows_avx512(f, half, acc, t, lo, hi);
+      density_rows_avx512(f, half, acc, t, lo, hi, diffusion);
+    else if (diffusion)
+      density_rows_baseline<true>(f, half, acc, t, lo, hi);
     else
-      density_rows_baseline(f, half, acc, t, lo, hi);
+      density_rows_baseline<false>(f, half, acc, t, lo, hi);
   }
+  const double diffusivity = 2.0 * dd.delta * dd.c0;  // D_a = diffusivity h_a eps_a sum
   std::size_t bounded = 0;
 #pragma omp parallel for schedule(static) reduction(+ : bounded)
   for (long a = 0; a < n; ++a) {
@@ -132,6 +169,7 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
     }
     f.omega[a] = omega;
     f.drho[a] = acc.sum(a, 1) / omega;
+    if (diffusion && f.kind[a] == kFluid) f.drho[a] += diffusivity * f.h[a] * f.eps[a] * acc.sum(a, 2);
     f.p_term[a] = (voidage_weighted_pressure ? f.eps[a] : 1.0) * (f.P[a] - ph(f.z[a])) /
                   (omega * f.rho[a] * f.rho[a]);
   }

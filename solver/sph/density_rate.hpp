@@ -1,5 +1,6 @@
 #pragma once
 #include "domain/neighbour_list.hpp"
+#include "sph/density_diffusion.hpp"
 #include "sph/fluid_particles.hpp"
 #include "sph/hydrostatic_pressure.hpp"
 #include "sph/pair_accumulator.hpp"
@@ -18,8 +19,11 @@ namespace sphdem {
 // sum is truncated); returns how many particles hit that bound.
 // With a hydrostatic pressure ph, the pair term carries P - ph(z) instead of P (the
 // hydrostatic split of the variational coupling; ph's own force is added analytically).
+// With dd.on(), drho_a/dt also gets the density diffusion D_a of sph/density_diffusion.hpp
+// (diffusion_psi and diffusion_volume must be current on owned and halo particles).
 std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half,
                                  PairAccumulator& scratch, bool voidage_weighted_pressure = false,
-                                 const HydrostaticPressure& ph = {}, PairIsa isa = best_pair_isa());
+                                 const HydrostaticPressure& ph = {},
+                                 const DensityDiffusion& dd = {}, PairIsa isa = best_pair_isa());
 
 }  // namespace sphdem

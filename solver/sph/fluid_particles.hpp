@@ -29,6 +29,7 @@ struct FluidParticles {
   std::vector<double> thx, thy, thz;  // pressure + viscous acceleration theta, eq. 2.70
   std::vector<double> ax, ay, az;     // total acceleration used by the integrator
   std::vector<double> dt_limit;       // CFL time-step limit per particle, eq. 3.5
+  std::vector<double> diffusion_psi, diffusion_volume;  // sph/density_diffusion.hpp (if on)
 
   std::size_t n_owned = 0;
   std::size_t size() const { return x.size(); }
@@ -41,6 +42,7 @@ struct FluidParticles {
     f("rho", rho); f("mass", mass); f("h", h); f("inv_h", inv_h); f("drho", drho); f("omega", omega);
     f("eps", eps); f("eps_drag", eps_drag); f("d_sauter", d_sauter); f("P", P); f("cs", cs); f("p_term", p_term); f("thx", thx); f("thy", thy); f("thz", thz);
     f("ax", ax); f("ay", ay); f("az", az); f("dt_limit", dt_limit);
+    f("diffusion_psi", diffusion_psi); f("diffusion_volume", diffusion_volume);
   }
   void resize(std::size_t n) {
     for_each_field([n](const char*, auto& v) { v.resize(n); });

@@ -50,11 +50,13 @@ Column make_column() {
     f.inv_h[i] = 1.0 / f.h[i];
     f.rho[i] = 1000.0 * (1.0 + 0.05 * u(rng));
     f.mass[i] = 1000.0 * (1.0 + 0.02 * u(rng));
-    f.eps[i] = 1.0;
     f.P[i] = 500.0 * (1.0 + u(rng));
     f.cs[i] = 10.0 * (1.0 + 0.1 * u(rng));
     f.p_term[i] = f.P[i] / (f.rho[i] * f.rho[i]);  // the halo's; owned ones are recomputed
-    f.kind[i] = kFluid;
+    f.kind[i] = i % 7 == 3 ? kWall : kFluid;  // walls among them: no density diffusion
+    f.eps[i] = 0.7 + 0.3 * std::abs(u(rng));
+    f.diffusion_psi[i] = f.kind[i] == kFluid ? 2.0 * u(rng) : 0.0;
+    f.diffusion_volume[i] = f.kind[i] == kFluid ? f.mass[i] / f.rho[i] : 0.0;
   }
   const double hmax = *std::max_element(f.h.begin(), f.h.end());
   const double rc = kernel::kSupport * hmax + kSkin;
@@ -69,7 +71,28 @@ struct Reference {
   std::vector<double> omega, drho, thx, thy, thz, vsig, scale_drho, scale_th;
 };
 
-Reference brute_force(const FluidParticles& f, const MomentumParams& p) {
+// sph/density_diffusion.hpp's D_a over every other point b (zero for a wall a).
+double brute_force_diffusion(const FluidParticles& f, const DensityDiffusion& dd, std::size_t a,
+                             double& scale) {
+  double sum = 0.0;
+  scale = 0.0;
+  if (!dd.on() || f.kind[a] != kFluid) return 0.0;
+  for (std::size_t b = 0; b < f.size(); ++b) {
+    if (b == a) continue;
+    const double dx = f.x[a] - f.x[b], dy = f.y[a] - f.y[b], dz = f.z[a] - f.z[b];
+    const double r2 = dx * dx + dy * dy + dz * dz;
+    const double minus_f = -0.5 * (kernel::grad_factor(r2, f.h[a]) + kernel::grad_factor(r2, f.h[b]));
+    const double term = (f.diffusion_psi[b] - f.diffusion_psi[a]) * minus_f * f.diffusion_volume[b];
+    sum += term;
+    scale += std::abs(term);
+  }
+  const double c = 2.0 * dd.delta * dd.c0 * f.h[a] * f.eps[a];
+  scale *= c;
+  return c * sum;
+}
+
+Reference brute_force(const FluidParticles& f, const MomentumParams& p,
+                      const DensityDiffusion& dd) {
   const std::size_t n = f.n_owned, total = f.size();
   Reference ref;
   for (auto* v : {&ref.omega, &ref.drho, &ref.thx, &ref.thy, &ref.thz, &ref.vsig, &ref.scale_drho,
@@ -88,9 +111,11 @@ Reference brute_force(const FluidParticles& f, const MomentumParams& p) {
       div_abs += std::abs(f.mass[b] * kernel::grad_factor(r2, f.h[a]) * udotr);
     }
     const double omega = 1.0 + f.h[a] / (3.0 * f.rho[a]) * dwdh;
+    double diff_abs = 0.0;
+    const double diff = brute_force_diffusion(f, dd, a, diff_abs);
     ref.omega[a] = omega;
-    ref.drho[a] = div / omega;
-    ref.scale_drho[a] = div_abs / omega;
+    ref.drho[a] = div / omega + diff;
+    ref.scale_drho[a] = div_abs / omega + diff_abs;
   }
   for (std::size_t a = 0; a < n; ++a) {
     double th[3] = {0, 0, 0}, th_abs = 0.0, vsig_max = f.cs[a];
@@ -127,25 +152,34 @@ Reference brute_force(const FluidParticles& f, const MomentumParams& p) {
   return ref;
 }
 
-void check_passes(PairIsa isa) {
+void check_passes(PairIsa isa, bool diffusion) {
   Column c = make_column();
   FluidParticles& f = c.f;
   ASSERT_GT(c.half.neighbour.size(), 40 * kOwned);  // a real neighbourhood, with halo entries
   PairAccumulator acc;
-  const std::size_t bounded = compute_density_rate(f, c.half, acc, false, {}, isa);
+  DensityDiffusion dd;
+  if (diffusion) {  // comparable with the continuity term here
+    dd.delta = 0.1;
+    dd.c0 = 30.0;
+  }
+  const std::size_t bounded = compute_density_rate(f, c.half, acc, false, {}, dd, isa);
   EXPECT_EQ(bounded, 0u);  // a full lattice neighbourhood keeps Omega inside [0.5, 2]
   MomentumParams p;
   p.viscosity = 2.0;  // a Morris term comparable with the pressure term here
   p.alpha_artificial = 0.5;
   p.cfl = 0.25;
   compute_fluid_acceleration(f, c.half, p, acc, isa);
-  const Reference ref = brute_force(f, p);
+  const Reference ref = brute_force(f, p, dd);
   double worst_drho = 0.0, worst_th = 0.0;
   for (std::size_t a = 0; a < kOwned; ++a) {
     EXPECT_NEAR(f.omega[a], ref.omega[a], 1e-13) << "a = " << a;
     worst_drho = std::max(worst_drho, std::abs(f.drho[a] - ref.drho[a]) / ref.scale_drho[a]);
     EXPECT_NEAR(f.p_term[a], f.P[a] / (ref.omega[a] * f.rho[a] * f.rho[a]),
                 1e-13 * std::abs(f.p_term[a]));
+    if (f.kind[a] == kWall) {  // walls only lend their pressure to the pairs
+      EXPECT_EQ(f.thx[a], 0.0);
+      continue;
+    }
     for (auto [got, want] :
          {std::pair{f.thx[a], ref.thx[a]}, {f.thy[a], ref.thy[a]}, {f.thz[a], ref.thz[a]}})
       worst_th = std::max(worst_th, std::abs(got - want) / ref.scale_th[a]);
@@ -157,12 +191,14 @@ void check_passes(PairIsa isa) {
 }
 
 TEST(SphPairs, BaselineMatchesBruteForce) {
-  check_passes(PairIsa::kBaseline);
+  check_passes(PairIsa::kBaseline, false);
+  check_passes(PairIsa::kBaseline, true);  // with the density diffusion
 }
 
 TEST(SphPairs, Avx512MatchesBruteForce) {
   if (best_pair_isa() != PairIsa::kAvx512) GTEST_SKIP() << "this CPU has no AVX-512 (x86-64-v4)";
-  check_passes(PairIsa::kAvx512);
+  check_passes(PairIsa::kAvx512, false);
+  check_passes(PairIsa::kAvx512, true);
 }
 
 }  // namespace
