@@ -414,13 +414,15 @@ class BlockMonodisperse:
         for eps in (() if mode == "reduced" else (0.9, 0.8)):
             out.append(Run(f"block_eps{eps}_variational", self.case,
                            dict(self._sets(mode), **{"particles.0.voidage": eps,
-                                                     "coupling.pressure_coupling": "variational"})))
+                                                     "coupling.pressure_coupling": "variational",
+                                                     "coupling.sphere_kernel_scale": 1})))
             # and with the hydrostatic split, which removes the kernel sums' error times the
             # absolute pressure (a 100 um sphere 7.2 mm deep: -9.4 % -> -3.8 % in slip)
             out.append(Run(f"block_eps{eps}_split", self.case,
                            dict(self._sets(mode), **{"particles.0.voidage": eps,
                                                      "coupling.pressure_coupling": "variational",
-                                                     "coupling.hydrostatic_split": "true"})))
+                                                     "coupling.hydrostatic_split": "true",
+                                                     "coupling.sphere_kernel_scale": 1})))
         return out
 
     def measure(self, r):
@@ -588,7 +590,8 @@ class SuspensionMonodisperse:
         return [Run("suspension_interface", self.case, interface, insitu=True),
                 Run("suspension_sediment", self.case, sediment),
                 Run("suspension_sediment_variational", self.case,
-                    dict(sediment, **{"coupling.pressure_coupling": "variational"}))]
+                    dict(sediment, **{"coupling.pressure_coupling": "variational",
+                                      "coupling.sphere_kernel_scale": 1}))]
 
     def window(self, r, u_ref):
         """Fit window: from 2 acoustic periods (the start-up: spheres reach their hindered
@@ -791,7 +794,9 @@ class BlockBidisperse:
     TARGET = 0.04
     PAIRS = {"150_100": "cases/block_bidisperse_150_100.yaml", "200_100": "cases/block_bidisperse_200_100.yaml"}
     DOUBLE = {"fluid.spacing": 2.0e-4, "coupling.voidage_smoothing": "double"}
-    VARIATIONAL = {"coupling.pressure_coupling": "variational"}
+    # at the spheres' kernel h, as these rows were made (the variational coupling's own
+    # default is the width rule's, scene/kernel_width_rule.hpp)
+    VARIATIONAL = {"coupling.pressure_coupling": "variational", "coupling.sphere_kernel_scale": 1}
 
     @staticmethod
     def tall(case):

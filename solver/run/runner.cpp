@@ -168,6 +168,11 @@ std::string describe_scene(const Scene& sc) {
   s += fmt::format("fluid            rho_f = {} kg/m^3, mu = {} Pa s, c0 = {:.4g} m/s, B = {:.4g} Pa, u_m = {:.4g} m/s\n",
                    sc.fluid.density, sc.fluid.viscosity, sc.fluid.sound_speed, sim.eos().B, sc.fluid.expected_speed);
   s += fmt::format("drag law         {}\n", drag::drag_law_name(sc.drag));
+  s += fmt::format("coupling         {}{}, spheres' kernel H = {} h, the drag's {} h{}\n",
+                   sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated",
+                   sc.hydrostatic_split ? " with the hydrostatic split" : "", sc.sphere_kernel_scale,
+                   sc.drag_kernel_scale,
+                   sc.sphere_kernel_reason.empty() ? "" : " (" + sc.sphere_kernel_reason + ")");
   const double dt = sim.dt_sph();
   const int sub = sp.n_owned == 0 ? 0 : 2 * std::max(1, static_cast<int>(std::ceil(0.5 * dt / sim.dt_dem_max())));
   s += fmt::format("contact time     t_c = {:.4g} s (k = {} N/m)\n", sim.contact_time(), sc.contact.normal.k);

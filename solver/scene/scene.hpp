@@ -127,13 +127,16 @@ struct DoubleSmoothingSpec {
 //    Still the gradient of an energy, U + sum_a m_a P_h/rho_a' + sum_j V_j P_h(z_j), which
 //    differs from U by the constant integral of P_h; the kernel-sum errors of the pair
 //    forces then scale with P - P_h instead of the absolute P (coupling/pressure_coupling.hpp).
-//  sphere_kernel_scale H/h (both couplings): each sphere's volume is spread with the kernel
+//  sphere_kernel_scale H/h (both couplings; default auto, scene/kernel_width_rule.hpp: h
+//    for the interpolated coupling, 1, 1.25 or 1.5 for the variational one from the
+//    scene's extra-drag ratio): each sphere's volume is spread with the kernel
 //    at H = scale h_a in the voidage (2.50), the interpolation (2.69, 2.72), the reaction
 //    (2.71) and the variational forces. Above 1 it smooths the hole a moving sphere carries
 //    through the fluid particles: with the variational coupling a 2.8 mm grain's extra
 //    drag, -8.3 % at c0 = 34 m/s with 1, is -0.5 % with 1.5; the price is smoother
 //    voidage edges (cases/README.md).
-//  drag_kernel_scale H_drag/h (<= sphere_kernel_scale, default equal): the kernel the drag's
+//  drag_kernel_scale H_drag/h (<= sphere_kernel_scale; default equal to a given
+//    sphere_kernel_scale, 1 under auto): the kernel the drag's
 //    fields are gathered with -- the voidage it reads (2.50 again, as eps_drag), the fluid
 //    velocity and the Shepard sums at the spheres (2.69, 2.72) -- and the reaction (2.71)
 //    spreads with. The fluid's own voidage and the variational pressure forces keep
@@ -158,6 +161,9 @@ struct Scene {
   bool hydrostatic_split = false;
   double sphere_kernel_scale = 1.0;  // H / h, see PressureCoupling
   double drag_kernel_scale = 1.0;    // H_drag / h, see PressureCoupling
+  // The loader's record of coupling.sphere_kernel_scale: auto (scene/kernel_width_rule.hpp):
+  // what it chose and why (empty when the file gave a number).
+  std::string sphere_kernel_reason;
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;

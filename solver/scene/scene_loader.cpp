@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "coupling/hindered_settling.hpp"
+#include "scene/kernel_width_rule.hpp"
 #include "scene/scene.hpp"
 
 namespace sphdem {
@@ -332,9 +333,39 @@ SizeDistribution read_size_distribution(const YAML::Node& node, const std::strin
   return L;
 }
 
+// coupling.sphere_kernel_scale (auto: scene/kernel_width_rule.hpp) and drag_kernel_scale,
+// then what the periodic width must hold: the spheres' halo reaches 2 H, with margin.
+void resolve_sphere_kernel(Scene& sc, bool kernel_auto, bool drag_kernel_given) {
+  auto fail = [&](const std::string& key, const std::string& what) {
+    throw SceneError(fmt::format("{}: key 'coupling.{}': {}", sc.source, key, what));
+  };
+  if (kernel_auto) {
+    const KernelWidthChoice c = choose_sphere_kernel_width(sc);
+    sc.sphere_kernel_scale = c.scale;
+    sc.sphere_kernel_reason = "auto: " + c.reason;
+    if (!drag_kernel_given) sc.drag_kernel_scale = c.drag_scale;
+  } else if (!drag_kernel_given) {
+    sc.drag_kernel_scale = sc.sphere_kernel_scale;
+  }
+  if (sc.drag_kernel_scale > sc.sphere_kernel_scale)
+    fail("drag_kernel_scale",
+         fmt::format("must be in [1, sphere_kernel_scale = {}] (got {})", sc.sphere_kernel_scale,
+                     sc.drag_kernel_scale));
+  const double reach =
+      2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
+  for (int d = 0; d < 2 && sc.fluid.enabled; ++d)
+    if (sc.box.length(d) < reach)
+      fail("sphere_kernel_scale",
+           fmt::format("{} needs a periodic width >= 2.4 sphere_kernel_scale smoothing_factor "
+                       "spacing = {} m (the spheres' kernel support with margin); domain.size "
+                       "gives {} m",
+                       sc.sphere_kernel_scale, reach, sc.box.length(d)));
+}
+
 Scene parse(const YAML::Node& root, const std::string& file) {
   Scene sc;
   sc.source = file;
+  bool kernel_auto = true, drag_kernel_given = false;
   MapReader top(root, "", file);
   top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles",
               "contact", "drag", "coupling", "time", "startup", "output", "insitu"});
@@ -600,20 +631,12 @@ Scene parse(const YAML::Node& root, const std::string& file) {
         (sc.gravity[0] != 0.0 || sc.gravity[1] != 0.0 || sc.gravity[2] >= 0.0))
       r.fail(r.key("hydrostatic_split"),
              "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
-    sc.sphere_kernel_scale = r.number("sphere_kernel_scale", 1.0, 1.0, 3.0);
-    sc.drag_kernel_scale =
-        r.number("drag_kernel_scale", sc.sphere_kernel_scale, 1.0, sc.sphere_kernel_scale);
-    for (int d = 0; d < 2 && sc.fluid.enabled;
-         ++d) {  // the spheres' halo reaches 2 H (with margin)
-      const double reach =
-          2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
-      if (sc.box.length(d) < reach)
-        r.fail(r.key("sphere_kernel_scale"),
-               fmt::format("{} needs a periodic width >= 2.4 sphere_kernel_scale smoothing_factor "
-                           "spacing = {} m "
-                           "(the spheres' kernel support with margin); domain.size gives {} m",
-                           sc.sphere_kernel_scale, reach, sc.box.length(d)));
-    }
+    // a number, or auto (the default): resolved below once c0 is known
+    kernel_auto = !r.has("sphere_kernel_scale") || (r.child("sphere_kernel_scale").IsScalar() &&
+                                                    r.child("sphere_kernel_scale").Scalar() == "auto");
+    if (!kernel_auto) sc.sphere_kernel_scale = r.number("sphere_kernel_scale", 1.0, 1.0, 3.0);
+    drag_kernel_given = r.has("drag_kernel_scale");
+    if (drag_kernel_given) sc.drag_kernel_scale = r.number("drag_kernel_scale", 1.0, 1.0, 3.0);
     r.finish();
   }
   {
@@ -682,6 +705,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     const double um = std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.fill_height()));
     sc.fluid.sound_speed = 10.0 * std::max(um, 1e-6);
   }
+  resolve_sphere_kernel(sc, kernel_auto, drag_kernel_given);
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
   if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = sc.fluid.spacing;
