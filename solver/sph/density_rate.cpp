@@ -137,6 +137,16 @@ SPHDEM_TARGET_AVX512 void density_rows_avx512(const FluidParticles& f, const Nei
     density_rows_lanes<false>(f, half, acc, t, lo, hi);
 }
 
+// The scalar rows compiled for x86-64-v3 (fused multiply-add).
+SPHDEM_TARGET_AVX2 void density_rows_avx2(const FluidParticles& f, const NeighbourList& half,
+                                          PairAccumulator& acc, int t, long lo, long hi,
+                                          bool diffusion) {
+  if (diffusion)
+    density_rows_baseline<true>(f, half, acc, t, lo, hi);
+  else
+    density_rows_baseline<false>(f, half, acc, t, lo, hi);
+}
+
 }  // namespace
 
 std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, PairAccumulator& acc,
@@ -153,6 +163,8 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
     const auto [lo, hi] = thread_rows(half.offset, n, kPairRowCost);
     if (isa == PairIsa::kAvx512)
       density_rows_avx512(f, half, acc, t, lo, hi, diffusion);
+    else if (isa == PairIsa::kAvx2)
+      density_rows_avx2(f, half, acc, t, lo, hi, diffusion);
     else if (diffusion)
       density_rows_baseline<true>(f, half, acc, t, lo, hi);
     else

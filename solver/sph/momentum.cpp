@@ -74,6 +74,13 @@ SPHDEM_TARGET_AVX512 void momentum_rows_avx512(const FluidParticles& f, const Ne
   momentum_rows(f, half, p, acc, t, lo, hi);
 }
 
+// And for x86-64-v3 (fused multiply-add).
+SPHDEM_TARGET_AVX2 void momentum_rows_avx2(const FluidParticles& f, const NeighbourList& half,
+                                           const MomentumParams& p, PairAccumulator& acc, int t,
+                                           std::size_t lo, std::size_t hi) {
+  momentum_rows(f, half, p, acc, t, lo, hi);
+}
+
 }  // namespace
 
 void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& half,
@@ -86,6 +93,8 @@ void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& half,
     const auto [lo, hi] = thread_rows(half.offset, n, kPairRowCost);
     if (isa == PairIsa::kAvx512)
       momentum_rows_avx512(f, half, p, acc, t, lo, hi);
+    else if (isa == PairIsa::kAvx2)
+      momentum_rows_avx2(f, half, p, acc, t, lo, hi);
     else
       momentum_rows(f, half, p, acc, t, lo, hi);
   }

@@ -1,11 +1,12 @@
 #pragma once
-// The instruction set the SPH pair passes run with: the x86-64 baseline on every CPU, or
-// AVX-512 (x86-64-v4: gathers, eight lanes, fused multiply-add) where the CPU has it. One
-// binary; the CPU is asked once. The two give the same sums to round-off (a unit test
-// compares them), not the same bits.
+// The instruction set the SPH pair passes run with: the x86-64 baseline on every CPU,
+// AVX2 with fused multiply-add (x86-64-v3: the scalar row loops, compiled for it) where the
+// CPU has that, or AVX-512 (x86-64-v4: gathers, eight lanes, fused multiply-add). One
+// binary; the CPU is asked once. They give the same sums to round-off (unit tests compare
+// them), not the same bits. Passes without an AVX2 form run the baseline under kAvx2.
 namespace sphdem {
 
-enum class PairIsa { kBaseline, kAvx512 };
+enum class PairIsa { kBaseline, kAvx2, kAvx512 };
 
 // A row's cost beside its entries' (one each) when the pair passes split rows between
 // threads (domain/row_partition.hpp).
@@ -21,6 +22,8 @@ PairIsa best_pair_isa();
 // narrower target, still compiles).
 #if defined(__x86_64__) && defined(__GNUC__)
 #define SPHDEM_TARGET_AVX512 [[gnu::target("arch=x86-64-v4"), gnu::flatten]]
+#define SPHDEM_TARGET_AVX2 [[gnu::target("arch=x86-64-v3"), gnu::flatten]]
 #else
 #define SPHDEM_TARGET_AVX512
+#define SPHDEM_TARGET_AVX2
 #endif

@@ -89,6 +89,11 @@ TEST(DensityDiffusion, SineDecaysAtTheDiffusivityBaseline) {
   check_sine(PairIsa::kBaseline);
 }
 
+TEST(DensityDiffusion, SineDecaysAtTheDiffusivityAvx2) {
+  if (best_pair_isa() == PairIsa::kBaseline) GTEST_SKIP() << "this CPU has no AVX2 (x86-64-v3)";
+  check_sine(PairIsa::kAvx2);
+}
+
 TEST(DensityDiffusion, SineDecaysAtTheDiffusivityAvx512) {
   if (best_pair_isa() != PairIsa::kAvx512) GTEST_SKIP() << "this CPU has no AVX-512 (x86-64-v4)";
   check_sine(PairIsa::kAvx512);

@@ -2,7 +2,7 @@
 // against the same sums taken over every pair by brute force, on a jittered lattice with
 // varied h, density, pressure and velocity, halo points among the neighbours and a list
 // with a skin. Both instruction sets of the passes (sph/pair_isa.hpp): the x86-64 baseline
-// always, AVX-512 where the CPU has it. The reference evaluates (2.53), (2.54), (2.55),
+// always, AVX2 and AVX-512 where the CPU has them. The reference evaluates (2.53), (2.54), (2.55),
 // (2.56) and the Morris term as written in the passes' headers, pair by pair, one particle
 // at a time: it shares with the passes only the kernel (tested in kernel_test.cpp).
 #include <gtest/gtest.h>
@@ -193,6 +193,12 @@ void check_passes(PairIsa isa, bool diffusion) {
 TEST(SphPairs, BaselineMatchesBruteForce) {
   check_passes(PairIsa::kBaseline, false);
   check_passes(PairIsa::kBaseline, true);  // with the density diffusion
+}
+
+TEST(SphPairs, Avx2MatchesBruteForce) {
+  if (best_pair_isa() == PairIsa::kBaseline) GTEST_SKIP() << "this CPU has no AVX2 (x86-64-v3)";
+  check_passes(PairIsa::kAvx2, false);
+  check_passes(PairIsa::kAvx2, true);
 }
 
 TEST(SphPairs, Avx512MatchesBruteForce) {
