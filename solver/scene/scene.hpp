@@ -24,8 +24,8 @@ struct FluidSpec {
   double fill_height = 0.0;        // free-surface height (m); 0 = the box height
   double expected_speed = 0.0;     // u_m (m/s) for B, eq. 2.64; 0 = largest Stokes speed
   double sound_speed = 0.0;        // c0 (m/s); 0 = 10 max(u_m, sqrt(2 g H)) (physics.md §1)
-  double alpha_artificial = 0.02;  // Monaghan alpha on approaching pairs only
-  double density_diffusion = 0.0;  // delta of the density diffusion (sph/density_diffusion.hpp)
+  double alpha_artificial = 0.0;   // Monaghan alpha on approaching pairs only (off: it adds viscosity)
+  double density_diffusion = 0.1;  // delta of the density diffusion (sph/density_diffusion.hpp)
   int gamma = 7;
   int wall_layers = 3;
   bool enabled = true;  // false: spheres only (dry DEM), no SPH particles

@@ -616,15 +616,22 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       for (const char* k : {"big_species", "big_h_over_d"})
         if (r.has(k)) r.fail(r.key(k), "applies only with voidage_smoothing: double");
     }
-    const std::string pc =
-        r.choice("pressure_coupling", "interpolated", {"interpolated", "variational"});
+    // default: variational (conserves energy where the voidage varies), interpolated with
+    // the double smoothing (whose voidage gradient the variational form lacks) or no fluid
+    const bool variational_applies = sc.fluid.enabled && !sc.double_smoothing.enabled;
+    const std::string pc = r.choice("pressure_coupling",
+                                    variational_applies ? "variational" : "interpolated",
+                                    {"interpolated", "variational"});
     sc.pressure_coupling =
         pc == "variational" ? PressureCoupling::kVariational : PressureCoupling::kInterpolated;
     if (sc.pressure_coupling == PressureCoupling::kVariational && sc.double_smoothing.enabled)
       r.fail(r.key("pressure_coupling"),
              "variational needs voidage_smoothing: single (the gradient of the "
              "double-smoothed voidage is not implemented); use interpolated");
-    sc.hydrostatic_split = r.boolean("hydrostatic_split", false);
+    // default: on wherever it applies (the variational coupling under gravity along -z)
+    const bool split_applies = sc.pressure_coupling == PressureCoupling::kVariational &&
+                               sc.gravity[0] == 0.0 && sc.gravity[1] == 0.0 && sc.gravity[2] < 0.0;
+    sc.hydrostatic_split = r.boolean("hydrostatic_split", split_applies);
     if (sc.hydrostatic_split && sc.pressure_coupling != PressureCoupling::kVariational)
       r.fail(r.key("hydrostatic_split"), "true needs pressure_coupling: variational");
     if (sc.hydrostatic_split &&

@@ -72,10 +72,11 @@ TEST(Hydrostatic, ColumnAtRestKeepsPressureHeightAndDensity) {
 // variational with the spheres' kernel twice the fluid's, coupling.sphere_kernel_scale).
 TEST(Hydrostatic, HeldSphereFeelsBuoyancy) {
   const std::vector<std::vector<std::string>> couplings = {
-      {},
-      {"coupling.pressure_coupling=variational"},
+      {"coupling.pressure_coupling=interpolated"},
+      {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=false"},
       {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=true"},
-      {"coupling.pressure_coupling=variational", "coupling.sphere_kernel_scale=2"}};
+      {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=false",
+       "coupling.sphere_kernel_scale=2"}};
   for (const auto& sets : couplings) {
     std::vector<std::string> all = sets;
     all.push_back("startup.relax_steps=200");
@@ -151,16 +152,22 @@ TEST(ExcessPorePressure, WaterAtRestHasNone) {
 // variational coupling part of the buoyancy comes from the wall particles' pairs straight onto the
 // spheres (near the wall the pairs carry the absolute pressure: 3.1 times the buoyancy up
 // from the wall, 2.1 times down from the fluid above); the load must count that path.
+namespace {
+bool absolute_pairs_of(const std::vector<std::string>& sets) {
+  return sets.size() == 2 && sets[1] == "coupling.hydrostatic_split=false";
+}
+}  // namespace
+
 TEST(FluidLoadOnTheWall, NeutralLayerNearTheWallAddsNoExcess) {
   const std::vector<std::vector<std::string>> couplings = {
       {"coupling.pressure_coupling=interpolated"},
-      {"coupling.pressure_coupling=variational"},
+      {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=false"},
       {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=true"}};
   for (auto sets : couplings) {
-    const std::string name =
-        sets.size() == 1 ? sets[0].substr(sets[0].find('=') + 1) : "variational, split";
-    const bool absolute_pairs =
-        sets.size() == 1 && sets[0].find("variational") != std::string::npos;
+    const std::string name = sets.size() == 1          ? sets[0].substr(sets[0].find('=') + 1)
+                             : absolute_pairs_of(sets) ? "variational"
+                                                       : "variational, split";
+    const bool absolute_pairs = absolute_pairs_of(sets);
     sets.push_back("startup.relax_steps=200");
     const Scene sc = load_scene_text(std::string(kColumn) + R"(
 species: [{name: neutral, diameter: 1.0e-4, density: 1000}]

@@ -298,7 +298,8 @@ TEST(SceneDefaults, EmptyTextGivesTheDefaults) {
   EXPECT_EQ(sc.fluid.viscosity, def.fluid.viscosity);
   EXPECT_EQ(sc.fluid.spacing, def.fluid.spacing);
   EXPECT_EQ(sc.fluid.smoothing_factor, 1.5);
-  EXPECT_EQ(sc.fluid.alpha_artificial, def.fluid.alpha_artificial);
+  EXPECT_EQ(sc.fluid.alpha_artificial, 0.0);    // no artificial viscosity (issue 14)
+  EXPECT_EQ(sc.fluid.density_diffusion, 0.1);   // delta-SPH instead
   EXPECT_EQ(sc.fluid.gamma, 7);
   EXPECT_EQ(sc.fluid.wall_layers, 3);
   EXPECT_TRUE(sc.species.empty());
@@ -475,13 +476,21 @@ TEST(SceneErrors, SphereKernelScaleInRangeAndWithinThePeriodicWidth) {
 }
 
 TEST(SceneErrors, HydrostaticSplitNeedsVariationalAndVerticalGravity) {
-  error_of(kBase + "coupling: {hydrostatic_split: true}\n",
+  error_of(kBase + "coupling: {pressure_coupling: interpolated, hydrostatic_split: true}\n",
            {kFile, "'coupling.hydrostatic_split'", "pressure_coupling: variational"});
   error_of(kBase + "gravity: [0.5, 0, -9.8]\ncoupling: {pressure_coupling: variational, hydrostatic_split: true}\n",
            {kFile, "'coupling.hydrostatic_split'", "gravity along -z"});
   const Scene sc = load_scene_text(kBase + "coupling: {pressure_coupling: variational, hydrostatic_split: true}\n", kFile);
   EXPECT_TRUE(sc.hydrostatic_split);
-  EXPECT_FALSE(load_scene_text(kBase, kFile).hydrostatic_split);
+  // the defaults (issue 14): variational with the split under gravity along -z; without
+  // the split elsewhere; interpolated with the double smoothing
+  const Scene def = load_scene_text(kBase, kFile);
+  EXPECT_EQ(def.pressure_coupling, PressureCoupling::kVariational);
+  EXPECT_TRUE(def.hydrostatic_split);
+  const Scene tilted = load_scene_text(kBase + "gravity: [0.5, 0, -9.8]\n", kFile);
+  EXPECT_EQ(tilted.pressure_coupling, PressureCoupling::kVariational);
+  EXPECT_FALSE(tilted.hydrostatic_split);
+  EXPECT_FALSE(load_scene_text(kBase + "coupling: {pressure_coupling: interpolated}\n", kFile).hydrostatic_split);
 }
 
 TEST(SceneErrors, DampingAndRestitutionExclusive) {
