@@ -297,8 +297,8 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
     fluid_halo_.fill(f.diffusion_psi);
     fluid_halo_.fill(f.diffusion_volume);
   }
-  omega_bounded_ = compute_density_rate(f, fluid_pairs_, pair_scratch_, variational,
-                                        params_.fluid.split, dd);
+  omega_bounded_ =
+      compute_density_rate(f, fluid_pairs_, pair_scratch_, variational, params_.fluid.split, dd);
   fluid_halo_.fill(f.omega);
   fluid_halo_.fill(f.p_term);
   lap(PassTimers::kDensity);

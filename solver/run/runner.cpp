@@ -18,7 +18,9 @@ namespace sphdem {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 std::string format_duration(double s) {
   if (!std::isfinite(s)) return "?";
@@ -54,7 +56,8 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   Simulation sim(scene);
   if (out)
     *out << fmt::format("sphdem: {} fluid + {} wall SPH particles, {} spheres; relaxing {} steps\n",
-                        sim.fluid_count(), sim.wall_count(), sim.spheres().n_owned, scene.startup.relax_steps)
+                        sim.fluid_count(), sim.wall_count(), sim.spheres().n_owned,
+                        scene.startup.relax_steps)
          << std::flush;
   sim.relax();
   RunLog log((fs::path(opt.out_dir) / "log.csv").string(), scene.species);
@@ -98,9 +101,11 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
       const double wall = since(t_loop);
       const double rate = sim.step_count() / wall;
       const double eta = wall * (end - sim.time()) / std::max(sim.time(), 1e-30);
-      *out << fmt::format("  t = {:.4e} / {:.4e} s ({:4.1f} %)  step {}  {:.1f} steps/s  dt = {:.3e} s  ETA {}\n",
-                          sim.time(), end, 100.0 * sim.time() / end, sim.step_count(), rate, sim.dt_sph(),
-                          format_duration(eta))
+      *out << fmt::format(
+                  "  t = {:.4e} / {:.4e} s ({:4.1f} %)  step {}  {:.1f} steps/s  dt = {:.3e} s  "
+                  "ETA {}\n",
+                  sim.time(), end, 100.0 * sim.time() / end, sim.step_count(), rate, sim.dt_sph(),
+                  format_duration(eta))
            << std::flush;
     }
   }
@@ -119,7 +124,8 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     for (double x : t) total += x;
     std::string parts;
     for (int k = 0; k < PassTimers::kCount; ++k)
-      parts += fmt::format(" {} {:.0f}%", PassTimers::kNames[k], 100.0 * t[k] / std::max(total, 1e-30));
+      parts +=
+          fmt::format(" {} {:.0f}%", PassTimers::kNames[k], 100.0 * t[k] / std::max(total, 1e-30));
     *out << "sphdem: time per pass:" << parts << "\n";
     for (const auto& hk : opt.hooks)
       *out << fmt::format("sphdem: {}: {:.2f} s, {:.1f} % of the step time\n", hk.name, hk.seconds,
@@ -127,8 +133,9 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   }
   if (out) *out << "sphdem: " << r.safeguards.describe(sim.fluid().n_owned) << "\n";
   if (out)
-    *out << fmt::format("sphdem: done, {} steps to t = {:.4e} s in {} ({:.3g} SPH particle-steps/s)\n", r.steps,
-                        r.simulated_time, format_duration(r.wall_seconds), r.fluid_particle_steps_per_second);
+    *out << fmt::format(
+        "sphdem: done, {} steps to t = {:.4e} s in {} ({:.3g} SPH particle-steps/s)\n", r.steps,
+        r.simulated_time, format_duration(r.wall_seconds), r.fluid_particle_steps_per_second);
   return r;
 }
 
@@ -137,19 +144,22 @@ std::string describe_scene(const Scene& sc) {
   Simulation sim(sc);
   std::string s;
   s += fmt::format("scene            {} ({})\n", sc.name, sc.source);
-  s += fmt::format("domain           {} x {} x {} m, periodic in x and y, wall at z = 0, fluid to z = {} m\n",
-                   sc.box.length(0), sc.box.length(1), sc.box.length(2), sc.fill_height());
-  s += fmt::format("SPH particles    {} fluid + {} wall ({} layers), spacing dx = {} m, h = {:.4g} m\n",
-                   sim.fluid_count(), sim.wall_count(), sc.fluid.wall_layers, sc.fluid.spacing,
-                   sc.fluid.smoothing_factor * sc.fluid.spacing);
+  s += fmt::format(
+      "domain           {} x {} x {} m, periodic in x and y, wall at z = 0, fluid to z = {} m\n",
+      sc.box.length(0), sc.box.length(1), sc.box.length(2), sc.fill_height());
+  s += fmt::format(
+      "SPH particles    {} fluid + {} wall ({} layers), spacing dx = {} m, h = {:.4g} m\n",
+      sim.fluid_count(), sim.wall_count(), sc.fluid.wall_layers, sc.fluid.spacing,
+      sc.fluid.smoothing_factor * sc.fluid.spacing);
   const auto& sp = sim.spheres();
   std::vector<std::size_t> count(sc.species.size(), 0);
   for (std::size_t j = 0; j < sp.n_owned; ++j) ++count[sp.species[j]];
   for (std::size_t k = 0; k < sc.species.size(); ++k) {
     const SpeciesSpec& spec = sc.species[k];
     if (spec.monodisperse()) {
-      s += fmt::format("species {:<8} {} spheres, d = {} m, rho = {} kg/m^3, h/d = dx/d = {:.3g}\n", spec.name,
-                       count[k], spec.diameter, spec.density, sc.fluid.spacing / spec.diameter);
+      s += fmt::format("species {:<8} {} spheres, d = {} m, rho = {} kg/m^3, h/d = dx/d = {:.3g}\n",
+                       spec.name, count[k], spec.diameter, spec.density,
+                       sc.fluid.spacing / spec.diameter);
       continue;
     }
     double dmin = spec.d_max(), dmax = spec.d_min(), sum = 0.0;  // of the spheres placed
@@ -159,35 +169,47 @@ std::string describe_scene(const Scene& sc) {
         dmax = std::max(dmax, 2.0 * sp.radius[j]);
         sum += 2.0 * sp.radius[j];
       }
-    s += fmt::format("species {:<8} {} spheres, {} law on [{}, {}] m (d32 = {:.4g} m; placed: mean {:.4g} m, "
-                     "{:.4g} .. {:.4g} m), rho = {} kg/m^3, h/d = dx/d = {:.3g} .. {:.3g}\n",
-                     spec.name, count[k], size_law_name(spec.size.law), spec.d_min(), spec.d_max(), spec.diameter,
-                     count[k] ? sum / count[k] : 0.0, dmin, dmax, spec.density, sc.fluid.spacing / spec.d_max(),
-                     sc.fluid.spacing / spec.d_min());
+    s += fmt::format(
+        "species {:<8} {} spheres, {} law on [{}, {}] m (d32 = {:.4g} m; placed: mean {:.4g} m, "
+        "{:.4g} .. {:.4g} m), rho = {} kg/m^3, h/d = dx/d = {:.3g} .. {:.3g}\n",
+        spec.name, count[k], size_law_name(spec.size.law), spec.d_min(), spec.d_max(),
+        spec.diameter, count[k] ? sum / count[k] : 0.0, dmin, dmax, spec.density,
+        sc.fluid.spacing / spec.d_max(), sc.fluid.spacing / spec.d_min());
   }
-  s += fmt::format("fluid            rho_f = {} kg/m^3, mu = {} Pa s, c0 = {:.4g} m/s, B = {:.4g} Pa, u_m = {:.4g} m/s\n",
-                   sc.fluid.density, sc.fluid.viscosity, sc.fluid.sound_speed, sim.eos().B, sc.fluid.expected_speed);
+  s += fmt::format(
+      "fluid            rho_f = {} kg/m^3, mu = {} Pa s, c0 = {:.4g} m/s, B = {:.4g} Pa, u_m = "
+      "{:.4g} m/s\n",
+      sc.fluid.density, sc.fluid.viscosity, sc.fluid.sound_speed, sim.eos().B,
+      sc.fluid.expected_speed);
   s += fmt::format("drag law         {}\n", drag::drag_law_name(sc.drag));
-  s += fmt::format("coupling         {}{}, spheres' kernel H = {} h, the drag's {} h{}\n",
-                   sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated",
-                   sc.hydrostatic_split ? " with the hydrostatic split" : "", sc.sphere_kernel_scale,
-                   sc.drag_kernel_scale,
-                   sc.sphere_kernel_reason.empty() ? "" : " (" + sc.sphere_kernel_reason + ")");
+  s += fmt::format(
+      "coupling         {}{}, spheres' kernel H = {} h, the drag's {} h{}\n",
+      sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated",
+      sc.hydrostatic_split ? " with the hydrostatic split" : "", sc.sphere_kernel_scale,
+      sc.drag_kernel_scale,
+      sc.sphere_kernel_reason.empty() ? "" : " (" + sc.sphere_kernel_reason + ")");
   const double dt = sim.dt_sph();
-  const int sub = sp.n_owned == 0 ? 0 : 2 * std::max(1, static_cast<int>(std::ceil(0.5 * dt / sim.dt_dem_max())));
-  s += fmt::format("contact time     t_c = {:.4g} s (k = {} N/m)\n", sim.contact_time(), sc.contact.normal.k);
+  const int sub = sp.n_owned == 0
+                      ? 0
+                      : 2 * std::max(1, static_cast<int>(std::ceil(0.5 * dt / sim.dt_dem_max())));
+  s += fmt::format("contact time     t_c = {:.4g} s (k = {} N/m)\n", sim.contact_time(),
+                   sc.contact.normal.k);
   const TangentialParams& tp = sc.contact.tangential;
   if (tp.model == TangentialParams::Model::kLinearHistory)
-    s += fmt::format("friction         linear_history: k_t = {:.4g} N/m, mu = {}, {}\n", tp.stiffness_ratio * sc.contact.normal.k,
-                     tp.friction, tp.restitution > 0 ? fmt::format("e_t = {}", tp.restitution)
-                                                     : fmt::format("gamma_t = {} kg/s", tp.damping));
+    s += fmt::format("friction         linear_history: k_t = {:.4g} N/m, mu = {}, {}\n",
+                     tp.stiffness_ratio * sc.contact.normal.k, tp.friction,
+                     tp.restitution > 0 ? fmt::format("e_t = {}", tp.restitution)
+                                        : fmt::format("gamma_t = {} kg/s", tp.damping));
   if (sc.contact.rolling.model == RollingParams::Model::kEpsd)
     s += fmt::format("rolling          epsd: mu_r = {}, eta_r = {}\n", sc.contact.rolling.friction,
                      sc.contact.rolling.damping_ratio);
-  s += fmt::format("time steps       dt_SPH = {:.4g} s (CFL {}), dt_DEM = {:.4g} s, {} DEM sub-steps per SPH step\n",
-                   dt, sc.time.cfl, sub > 0 ? dt / sub : 0.0, sub);
-  s += fmt::format("run              {} relaxation steps, then t = 0 .. {} s: about {:.0f} SPH steps\n",
-                   sc.startup.relax_steps, sc.time.end, sc.time.end / dt);
+  s += fmt::format(
+      "time steps       dt_SPH = {:.4g} s (CFL {}), dt_DEM = {:.4g} s, {} DEM sub-steps per SPH "
+      "step\n",
+      dt, sc.time.cfl, sub > 0 ? dt / sub : 0.0, sub);
+  s += fmt::format(
+      "run              {} relaxation steps, then t = 0 .. {} s: about {:.0f} SPH steps\n",
+      sc.startup.relax_steps, sc.time.end, sc.time.end / dt);
   const double mb = (bytes_of(sim.fluid()) + bytes_of(sim.spheres())) / 1048576.0;
   // One step builds what the run holds besides the arrays: neighbour and contact lists,
   // per-thread scratch, the contact history; the process's peak resident set then is

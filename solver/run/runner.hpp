@@ -29,7 +29,7 @@ struct RunOptions {
 
 struct RunSummary {
   long steps = 0;
-  double step_seconds = 0;  // wall time in Simulation::step
+  double step_seconds = 0;          // wall time in Simulation::step
   std::vector<PeriodicHook> hooks;  // with their wall times
   double simulated_time = 0;
   double wall_seconds = 0;

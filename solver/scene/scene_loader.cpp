@@ -348,11 +348,9 @@ void resolve_sphere_kernel(Scene& sc, bool kernel_auto, bool drag_kernel_given) 
     sc.drag_kernel_scale = sc.sphere_kernel_scale;
   }
   if (sc.drag_kernel_scale > sc.sphere_kernel_scale)
-    fail("drag_kernel_scale",
-         fmt::format("must be in [1, sphere_kernel_scale = {}] (got {})", sc.sphere_kernel_scale,
-                     sc.drag_kernel_scale));
-  const double reach =
-      2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
+    fail("drag_kernel_scale", fmt::format("must be in [1, sphere_kernel_scale = {}] (got {})",
+                                          sc.sphere_kernel_scale, sc.drag_kernel_scale));
+  const double reach = 2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
   for (int d = 0; d < 2 && sc.fluid.enabled; ++d)
     if (sc.box.length(d) < reach)
       fail("sphere_kernel_scale",
@@ -583,8 +581,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   }
   {
     MapReader r(top.child("drag"), "drag", file);
-    const std::string law =
-        r.choice("law", "di_felice", {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)});
+    const std::string law = r.choice(
+        "law", "di_felice", {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)});
     drag::drag_law_from_name(law, sc.drag);
     r.finish();
   }
@@ -619,9 +617,9 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     // default: variational (conserves energy where the voidage varies), interpolated with
     // the double smoothing (whose voidage gradient the variational form lacks) or no fluid
     const bool variational_applies = sc.fluid.enabled && !sc.double_smoothing.enabled;
-    const std::string pc = r.choice("pressure_coupling",
-                                    variational_applies ? "variational" : "interpolated",
-                                    {"interpolated", "variational"});
+    const std::string pc =
+        r.choice("pressure_coupling", variational_applies ? "variational" : "interpolated",
+                 {"interpolated", "variational"});
     sc.pressure_coupling =
         pc == "variational" ? PressureCoupling::kVariational : PressureCoupling::kInterpolated;
     if (sc.pressure_coupling == PressureCoupling::kVariational && sc.double_smoothing.enabled)
@@ -639,8 +637,9 @@ Scene parse(const YAML::Node& root, const std::string& file) {
       r.fail(r.key("hydrostatic_split"),
              "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
     // a number, or auto (the default): resolved below once c0 is known
-    kernel_auto = !r.has("sphere_kernel_scale") || (r.child("sphere_kernel_scale").IsScalar() &&
-                                                    r.child("sphere_kernel_scale").Scalar() == "auto");
+    kernel_auto =
+        !r.has("sphere_kernel_scale") || (r.child("sphere_kernel_scale").IsScalar() &&
+                                          r.child("sphere_kernel_scale").Scalar() == "auto");
     if (!kernel_auto) sc.sphere_kernel_scale = r.number("sphere_kernel_scale", 1.0, 1.0, 3.0);
     drag_kernel_given = r.has("drag_kernel_scale");
     if (drag_kernel_given) sc.drag_kernel_scale = r.number("drag_kernel_scale", 1.0, 1.0, 3.0);

@@ -181,7 +181,8 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
     }
     f.omega[a] = omega;
     f.drho[a] = acc.sum(a, 1) / omega;
-    if (diffusion && f.kind[a] == kFluid) f.drho[a] += diffusivity * f.h[a] * f.eps[a] * acc.sum(a, 2);
+    if (diffusion && f.kind[a] == kFluid)
+      f.drho[a] += diffusivity * f.h[a] * f.eps[a] * acc.sum(a, 2);
     f.p_term[a] = (voidage_weighted_pressure ? f.eps[a] : 1.0) * (f.P[a] - ph(f.z[a])) /
                   (omega * f.rho[a] * f.rho[a]);
   }

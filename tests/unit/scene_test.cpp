@@ -109,7 +109,9 @@ std::string fmt17(double x) {
   return o.str();
 }
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const std::string& part) {
+  return s.find(part) != std::string::npos;
+}
 
 // Loads and expects a SceneError whose message holds every one of `parts`; returns it.
 std::string error_of(const std::string& yaml, const std::vector<std::string>& overrides,
@@ -125,7 +127,8 @@ std::string error_of(const std::string& yaml, const std::vector<std::string>& ov
     ADD_FAILURE() << "expected a SceneError, got another exception: " << e.what();
     return msg;
   }
-  for (const auto& p : parts) EXPECT_TRUE(contains(msg, p)) << "message lacks '" << p << "': " << msg;
+  for (const auto& p : parts)
+    EXPECT_TRUE(contains(msg, p)) << "message lacks '" << p << "': " << msg;
   return msg;
 }
 std::string error_of(const std::string& yaml, const std::vector<std::string>& parts) {
@@ -160,9 +163,11 @@ void expect_same_scene(const Scene& a, const Scene& b, double rel) {
   auto same = [&](double x, double y, const char* what) {
     if (rel == 0.0)
       EXPECT_EQ(x, y) << what << ": " << fmt17(x) << " reloads as " << fmt17(y);
-    else EXPECT_NEAR(x, y, rel * std::max(std::abs(x), std::abs(y))) << what;
+    else
+      EXPECT_NEAR(x, y, rel * std::max(std::abs(x), std::abs(y))) << what;
   };
-  auto same3 = [&](const std::array<double, 3>& x, const std::array<double, 3>& y, const char* what) {
+  auto same3 = [&](const std::array<double, 3>& x, const std::array<double, 3>& y,
+                   const char* what) {
     for (int d = 0; d < 3; ++d) same(x[d], y[d], what);
   };
   EXPECT_EQ(a.name, b.name);
@@ -219,13 +224,16 @@ void expect_same_scene(const Scene& a, const Scene& b, double rel) {
   EXPECT_EQ(a.contact.normal.clip_attraction, b.contact.normal.clip_attraction);
   same(a.contact.skin, b.contact.skin, "contact.skin");
   EXPECT_EQ(a.contact.tangential.model, b.contact.tangential.model);
-  same(a.contact.tangential.stiffness_ratio, b.contact.tangential.stiffness_ratio, "contact.tangential.stiffness_ratio");
+  same(a.contact.tangential.stiffness_ratio, b.contact.tangential.stiffness_ratio,
+       "contact.tangential.stiffness_ratio");
   same(a.contact.tangential.damping, b.contact.tangential.damping, "contact.tangential.damping");
-  same(a.contact.tangential.restitution, b.contact.tangential.restitution, "contact.tangential.restitution");
+  same(a.contact.tangential.restitution, b.contact.tangential.restitution,
+       "contact.tangential.restitution");
   same(a.contact.tangential.friction, b.contact.tangential.friction, "contact.tangential.friction");
   EXPECT_EQ(a.contact.rolling.model, b.contact.rolling.model);
   same(a.contact.rolling.friction, b.contact.rolling.friction, "contact.rolling.friction");
-  same(a.contact.rolling.damping_ratio, b.contact.rolling.damping_ratio, "contact.rolling.damping_ratio");
+  same(a.contact.rolling.damping_ratio, b.contact.rolling.damping_ratio,
+       "contact.rolling.damping_ratio");
   EXPECT_EQ(a.drag.index(), b.drag.index());
   same(a.voidage_floor, b.voidage_floor, "coupling.voidage_floor");
   same(a.time.end, b.time.end, "time.end");
@@ -298,8 +306,8 @@ TEST(SceneDefaults, EmptyTextGivesTheDefaults) {
   EXPECT_EQ(sc.fluid.viscosity, def.fluid.viscosity);
   EXPECT_EQ(sc.fluid.spacing, def.fluid.spacing);
   EXPECT_EQ(sc.fluid.smoothing_factor, 1.5);
-  EXPECT_EQ(sc.fluid.alpha_artificial, 0.0);    // no artificial viscosity (issue 14)
-  EXPECT_EQ(sc.fluid.density_diffusion, 0.1);   // delta-SPH instead
+  EXPECT_EQ(sc.fluid.alpha_artificial, 0.0);   // no artificial viscosity (issue 14)
+  EXPECT_EQ(sc.fluid.density_diffusion, 0.1);  // delta-SPH instead
   EXPECT_EQ(sc.fluid.gamma, 7);
   EXPECT_EQ(sc.fluid.wall_layers, 3);
   EXPECT_TRUE(sc.species.empty());
@@ -354,7 +362,9 @@ time: {end: 0.05}
 )";
   const Scene sc = load_scene_text(yaml, kFile);
   const double g = std::sqrt(3.0 * 3.0 + 9.0 * 9.0), mu = 1e-3, H = 0.005;
-  auto stokes = [&](double d, double rho) { return std::abs(rho - 1000.0) * g * d * d / (18.0 * mu); };
+  auto stokes = [&](double d, double rho) {
+    return std::abs(rho - 1000.0) * g * d * d / (18.0 * mu);
+  };
   const double um = std::max({stokes(1e-4, 2500), stokes(1e-3, 2650), stokes(1.5e-3, 100)});
   EXPECT_DOUBLE_EQ(um, stokes(1.5e-3, 100));
   EXPECT_GT(um, std::sqrt(2.0 * g * H));
@@ -383,21 +393,24 @@ TEST(SceneDefaults, GivenValuesAreKept) {
 TEST(SceneErrors, UnknownTopLevelKey) {
   const std::string msg =
       error_of(kBase + "bogus: 1\n", {kFile, "'bogus'", "unknown key", "allowed"});
-  for (const char* k : {"name", "description", "domain", "gravity", "fluid", "species", "particles", "contact",
-                        "drag", "coupling", "time", "startup", "output"})
+  for (const char* k : {"name", "description", "domain", "gravity", "fluid", "species", "particles",
+                        "contact", "drag", "coupling", "time", "startup", "output"})
     EXPECT_TRUE(contains(msg, k)) << k << " not listed: " << msg;
 }
 
 TEST(SceneErrors, UnknownNestedKey) {
-  const std::string msg = error_of(kBase + "fluid: {densty: 1000}\n", {kFile, "'fluid.densty'", "allowed"});
-  for (const char* k : {"density", "viscosity", "spacing", "smoothing_factor", "fill_height", "expected_speed",
-                        "sound_speed", "alpha_artificial", "gamma", "wall_layers"})
+  const std::string msg =
+      error_of(kBase + "fluid: {densty: 1000}\n", {kFile, "'fluid.densty'", "allowed"});
+  for (const char* k :
+       {"density", "viscosity", "spacing", "smoothing_factor", "fill_height", "expected_speed",
+        "sound_speed", "alpha_artificial", "gamma", "wall_layers"})
     EXPECT_TRUE(contains(msg, k)) << k << " not listed: " << msg;
   error_of(kBase + "time: {ned: 1}\n", {"'time.ned'", "allowed", "end", "cfl"});
   error_of(edit(kBase, "density: 2500}", "density: 2500, colour: red}"),
            {"'species.0.colour'", "allowed", "diameter"});
   // A lattice-only key on a single sphere is unknown there.
-  error_of(edit(kBase, "position:", "voidage: 0.8, position:"), {"'particles.0.voidage'", "allowed", "position"});
+  error_of(edit(kBase, "position:", "voidage: 0.8, position:"),
+           {"'particles.0.voidage'", "allowed", "position"});
 }
 
 TEST(SceneErrors, WrongType) {
@@ -407,25 +420,32 @@ TEST(SceneErrors, WrongType) {
   error_of(kBase + "gravity: [0, 0, x]\n", {"'gravity'", "list of 3 numbers"});
   error_of(kBase + "fluid: 5\n", {"'fluid'", "map"});
   error_of(kBase + "time: {end: [1]}\n", {"'time.end'", "a number"});
-  error_of(edit(kBase, "position:", "rigid: maybe, position:"), {"'particles.0.rigid'", "true or false"});
+  error_of(edit(kBase, "position:", "rigid: maybe, position:"),
+           {"'particles.0.rigid'", "true or false"});
   error_of("species: {name: glass}\n", {"'species'", "list"});
   error_of(kBase + "drag: {law: newton}\n", {"'drag.law'", "one of", "stokes", "di_felice",
                                              "coulson_richardson", "brown_lawler", "newton"});
-  error_of(edit(kBase, "type: single", "type: cloud"), {"'particles.0.type'", "single, lattice, random"});
+  error_of(edit(kBase, "type: single", "type: cloud"),
+           {"'particles.0.type'", "single, lattice, random"});
   error_of("a: [1,\n", {kFile, "not valid YAML"});
 }
 
 TEST(SceneErrors, OutOfRange) {
-  error_of(kBase + "fluid: {viscosity: -1.0e-3}\n", {kFile, "'fluid.viscosity'", "(0, inf]", "-0.001"});
-  error_of(kBase + "fluid: {smoothing_factor: 5}\n", {"'fluid.smoothing_factor'", "[1, 3]", "got 5"});
+  error_of(kBase + "fluid: {viscosity: -1.0e-3}\n",
+           {kFile, "'fluid.viscosity'", "(0, inf]", "-0.001"});
+  error_of(kBase + "fluid: {smoothing_factor: 5}\n",
+           {"'fluid.smoothing_factor'", "[1, 3]", "got 5"});
   error_of(kBase + "time: {cfl: 0}\n", {"'time.cfl'", "(0, 1]", "got 0"});
   error_of(kBase + "fluid: {gamma: 8}\n", {"'fluid.gamma'", "[1, 7]"});
-  error_of(kBase + "fluid: {smoothing_factor: 2, wall_layers: 3}\n", {"'fluid.wall_layers'", "[4, 8]"});
+  error_of(kBase + "fluid: {smoothing_factor: 2, wall_layers: 3}\n",
+           {"'fluid.wall_layers'", "[4, 8]"});
   error_of(kBase + "fluid: {fill_height: 0.007}\n", {"'fluid.fill_height'", "0.006]"});
   error_of(kBase + "fluid: {fill_height: 4.0e-4}\n", {"'fluid.fill_height'", "3 fluid layers"});
   error_of(kBase + "startup: {damping: 1}\n", {"'startup.damping'", "[0, 1)"});
-  error_of(kBase + "time: {dem_steps_per_contact: 2}\n", {"'time.dem_steps_per_contact'", "[5, 1000]"});
-  error_of(kBase + "coupling: {voidage_floor: 0.99}\n", {"'coupling.voidage_floor'", "[0.05, 0.95]"});
+  error_of(kBase + "time: {dem_steps_per_contact: 2}\n",
+           {"'time.dem_steps_per_contact'", "[5, 1000]"});
+  error_of(kBase + "coupling: {voidage_floor: 0.99}\n",
+           {"'coupling.voidage_floor'", "[0.05, 0.95]"});
   error_of(kBase + "contact: {restitution: 0}\n", {"'contact.restitution'", "(0, 1]"});
   error_of(kBase + "domain: {size: [0.004, 0.004, 0]}\n", {"'domain.size'", "> 0"});
   error_of(kBase + "fluid: {density: .nan}\n", {"'fluid.density'"});
@@ -435,28 +455,35 @@ species: [{name: glass, diameter: 1.0e-4, density: 2500}]
 particles: [{type: lattice, species: glass, min: [0, 0, 0.002], max: [0.004, 0.004, 0.004], voidage: 0.9}]
 )";
   EXPECT_NO_THROW(load_scene_text(lattice, kFile));
-  error_of(lattice, {"particles.0.voidage=1"}, {"'particles.0.voidage'", "[0.476", ", 1)", "got 1"});
+  error_of(lattice, {"particles.0.voidage=1"},
+           {"'particles.0.voidage'", "[0.476", ", 1)", "got 1"});
   error_of(lattice, {"particles.0.voidage=1.2"}, {"'particles.0.voidage'", ", 1)"});
   error_of(lattice, {"particles.0.voidage=0.3"}, {"'particles.0.voidage'", "[0.476"});
-  error_of(lattice, {"particles.0.max=[0.004, 0.004, 0.007]"}, {"particles.0.", "0 <= min < max <= domain.size"});
+  error_of(lattice, {"particles.0.max=[0.004, 0.004, 0.007]"},
+           {"particles.0.", "0 <= min < max <= domain.size"});
   // Single sphere: inside the box and clear of the bottom wall.
-  error_of(kBase, {"particles.0.position=[0.002, 0.002, 0.007]"}, {"'particles.0.position'", "inside"});
-  error_of(kBase, {"particles.0.position=[0.002, 0.002, 4.0e-5]"}, {"'particles.0.position'", "bottom wall"});
+  error_of(kBase, {"particles.0.position=[0.002, 0.002, 0.007]"},
+           {"'particles.0.position'", "inside"});
+  error_of(kBase, {"particles.0.position=[0.002, 0.002, 4.0e-5]"},
+           {"'particles.0.position'", "bottom wall"});
 }
 
 TEST(SceneErrors, SpeciesAndGroups) {
   error_of(edit(kBase, "species: glass", "species: sand"),
            {kFile, "'particles.0.species'", "'sand'", "not a species"});
-  error_of(edit(kBase, "  - {name: glass", "  - {name: glass, diameter: 2.0e-4, density: 2000}\n  - {name: glass"),
+  error_of(edit(kBase, "  - {name: glass",
+                "  - {name: glass, diameter: 2.0e-4, density: 2000}\n  - {name: glass"),
            {kFile, "'species.1.name'", "duplicate", "glass"});
   error_of(edit(kBase, "name: glass", "name: 'a b'"), {"'species.0.name'", "without"});
   error_of(edit(kBase, "name: glass", "name: 'a:b'"), {"'species.0.name'", "without"});
-  error_of(edit(kBase, "diameter: 1.0e-4", "diameter: -1.0e-4"), {"'species.0.diameter'", "(0, inf]"});
+  error_of(edit(kBase, "diameter: 1.0e-4", "diameter: -1.0e-4"),
+           {"'species.0.diameter'", "(0, inf]"});
 }
 
 TEST(SceneErrors, GeometryOfTheFluidLattice) {
   // 0.004 / 3e-4 = 13.3 layers.
-  error_of(kBase + "fluid: {spacing: 3.0e-4}\n", {kFile, "'fluid.spacing'", "0.004", "whole number"});
+  error_of(kBase + "fluid: {spacing: 3.0e-4}\n",
+           {kFile, "'fluid.spacing'", "0.004", "whole number"});
   // 0.001 m < 4.8 * 1.5 * 2e-4 = 1.44e-3 m (0.001 / 2e-4 = 5 layers divides).
   error_of(edit(kBase, "position: [0.002, 0.002, 0.0048]", "position: [0.0005, 0.0005, 0.0048]") +
                "domain: {size: [0.001, 0.001, 0.006]}\n",
@@ -464,23 +491,31 @@ TEST(SceneErrors, GeometryOfTheFluidLattice) {
 }
 
 TEST(SceneErrors, SphereKernelScaleInRangeAndWithinThePeriodicWidth) {
-  error_of(kBase + "coupling: {sphere_kernel_scale: 0.5}\n", {kFile, "'coupling.sphere_kernel_scale'", "[1, 3]"});
-  error_of(kBase + "coupling: {sphere_kernel_scale: 3.5}\n", {kFile, "'coupling.sphere_kernel_scale'", "[1, 3]"});
+  error_of(kBase + "coupling: {sphere_kernel_scale: 0.5}\n",
+           {kFile, "'coupling.sphere_kernel_scale'", "[1, 3]"});
+  error_of(kBase + "coupling: {sphere_kernel_scale: 3.5}\n",
+           {kFile, "'coupling.sphere_kernel_scale'", "[1, 3]"});
   // 2.4 * 3 * 1.5 * 2e-4 = 2.16e-3 m > 1.6e-3 m (8 layers, enough for the fluid's own 1.44e-3 m)
-  const std::string narrow = edit(kBase, "position: [0.002, 0.002, 0.0048]", "position: [0.0008, 0.0008, 0.0048]") +
-                             "domain: {size: [0.0016, 0.0016, 0.006]}\n";
+  const std::string narrow =
+      edit(kBase, "position: [0.002, 0.002, 0.0048]", "position: [0.0008, 0.0008, 0.0048]") +
+      "domain: {size: [0.0016, 0.0016, 0.006]}\n";
   error_of(narrow + "coupling: {sphere_kernel_scale: 3}\n",
            {kFile, "'coupling.sphere_kernel_scale'", "periodic width", "0.00216", "0.0016 m"});
-  EXPECT_DOUBLE_EQ(load_scene_text(narrow + "coupling: {sphere_kernel_scale: 2}\n", kFile).sphere_kernel_scale, 2.0);
+  EXPECT_DOUBLE_EQ(
+      load_scene_text(narrow + "coupling: {sphere_kernel_scale: 2}\n", kFile).sphere_kernel_scale,
+      2.0);
   EXPECT_DOUBLE_EQ(load_scene_text(kBase, kFile).sphere_kernel_scale, 1.0);
 }
 
 TEST(SceneErrors, HydrostaticSplitNeedsVariationalAndVerticalGravity) {
   error_of(kBase + "coupling: {pressure_coupling: interpolated, hydrostatic_split: true}\n",
            {kFile, "'coupling.hydrostatic_split'", "pressure_coupling: variational"});
-  error_of(kBase + "gravity: [0.5, 0, -9.8]\ncoupling: {pressure_coupling: variational, hydrostatic_split: true}\n",
+  error_of(kBase +
+               "gravity: [0.5, 0, -9.8]\ncoupling: {pressure_coupling: variational, "
+               "hydrostatic_split: true}\n",
            {kFile, "'coupling.hydrostatic_split'", "gravity along -z"});
-  const Scene sc = load_scene_text(kBase + "coupling: {pressure_coupling: variational, hydrostatic_split: true}\n", kFile);
+  const Scene sc = load_scene_text(
+      kBase + "coupling: {pressure_coupling: variational, hydrostatic_split: true}\n", kFile);
   EXPECT_TRUE(sc.hydrostatic_split);
   // the defaults (issue 14): variational with the split under gravity along -z; without
   // the split elsewhere; interpolated with the double smoothing
@@ -490,7 +525,8 @@ TEST(SceneErrors, HydrostaticSplitNeedsVariationalAndVerticalGravity) {
   const Scene tilted = load_scene_text(kBase + "gravity: [0.5, 0, -9.8]\n", kFile);
   EXPECT_EQ(tilted.pressure_coupling, PressureCoupling::kVariational);
   EXPECT_FALSE(tilted.hydrostatic_split);
-  EXPECT_FALSE(load_scene_text(kBase + "coupling: {pressure_coupling: interpolated}\n", kFile).hydrostatic_split);
+  EXPECT_FALSE(load_scene_text(kBase + "coupling: {pressure_coupling: interpolated}\n", kFile)
+                   .hydrostatic_split);
 }
 
 TEST(SceneErrors, DampingAndRestitutionExclusive) {
@@ -506,46 +542,58 @@ TEST(SceneErrors, DampingAndRestitutionExclusive) {
 
 TEST(SceneContactParts, TangentialAndRollingKeys) {
   // defaults of a turned-on model
-  Scene sc = load_scene_text(kBase + "contact: {tangential: {model: linear_history, friction: 0.5}}\n", kFile);
+  Scene sc = load_scene_text(
+      kBase + "contact: {tangential: {model: linear_history, friction: 0.5}}\n", kFile);
   EXPECT_EQ(sc.contact.tangential.model, TangentialParams::Model::kLinearHistory);
   EXPECT_EQ(sc.contact.tangential.stiffness_ratio, 2.0 / 7.0);
   EXPECT_EQ(sc.contact.tangential.damping, 0.0);
   EXPECT_LT(sc.contact.tangential.restitution, 0.0);
   EXPECT_EQ(sc.contact.tangential.friction, 0.5);
   EXPECT_EQ(sc.contact.rolling.model, RollingParams::Model::kNone);
-  sc = load_scene_text(kBase, kFile, {"contact.tangential={model: linear_history, friction: 0.3, damping: 1.0e-6}",
-                                      "contact.rolling={model: epsd, friction: 0.1}"});
+  sc =
+      load_scene_text(kBase, kFile,
+                      {"contact.tangential={model: linear_history, friction: 0.3, damping: 1.0e-6}",
+                       "contact.rolling={model: epsd, friction: 0.1}"});
   EXPECT_EQ(sc.contact.tangential.damping, 1.0e-6);
   EXPECT_EQ(sc.contact.rolling.model, RollingParams::Model::kEpsd);
   EXPECT_EQ(sc.contact.rolling.friction, 0.1);
   EXPECT_EQ(sc.contact.rolling.damping_ratio, 0.3);
   // explicit none is the default
-  sc = load_scene_text(kBase + "contact: {tangential: {model: none}, rolling: {model: none}}\n", kFile);
+  sc = load_scene_text(kBase + "contact: {tangential: {model: none}, rolling: {model: none}}\n",
+                       kFile);
   EXPECT_EQ(sc.contact.tangential.model, TangentialParams::Model::kNone);
   // keys of a model that is off are unknown; the model names are listed
   error_of(kBase + "contact: {tangential: {friction: 0.5}}\n",
            {kFile, "'contact.tangential.friction'", "unknown key", "allowed here: model"});
-  error_of(kBase + "contact: {rolling: {damping_ratio: 0.5}}\n", {"'contact.rolling.damping_ratio'", "unknown"});
+  error_of(kBase + "contact: {rolling: {damping_ratio: 0.5}}\n",
+           {"'contact.rolling.damping_ratio'", "unknown"});
   error_of(kBase + "contact: {tangential: {model: coulomb}}\n",
            {"'contact.tangential.model'", "none, linear_history", "coulomb"});
   error_of(kBase + "contact: {rolling: {model: cdt}}\n", {"'contact.rolling.model'", "none, epsd"});
   error_of(kBase + "contact: {tangential: {model: linear_history, friction: 0.5, frction: 1}}\n",
-           {"'contact.tangential.frction'", "allowed here", "friction", "stiffness_ratio", "restitution"});
+           {"'contact.tangential.frction'", "allowed here", "friction", "stiffness_ratio",
+            "restitution"});
   error_of(kBase + "contact: {tangential: linear_history}\n", {"'contact.tangential'", "map"});
   // required, ranges, exclusive keys
   error_of(kBase + "contact: {tangential: {model: linear_history}}\n",
            {"'contact.tangential.friction'", "required"});
   error_of(kBase + "contact: {tangential: {model: linear_history, friction: -0.1}}\n",
            {"'contact.tangential.friction'", "[0, inf]"});
-  error_of(kBase + "contact: {tangential: {model: linear_history, friction: 0.5, stiffness_ratio: 0}}\n",
-           {"'contact.tangential.stiffness_ratio'", "(0, 1]"});
-  error_of(kBase + "contact: {tangential: {model: linear_history, friction: 0.5, damping: 1.0e-6, restitution: 0.5}}\n",
+  error_of(
+      kBase + "contact: {tangential: {model: linear_history, friction: 0.5, stiffness_ratio: 0}}\n",
+      {"'contact.tangential.stiffness_ratio'", "(0, 1]"});
+  error_of(kBase +
+               "contact: {tangential: {model: linear_history, friction: 0.5, damping: 1.0e-6, "
+               "restitution: 0.5}}\n",
            {"'contact.tangential.restitution'", "not both"});
-  error_of(kBase + "contact: {tangential: {model: linear_history, friction: 0.5, restitution: 0}}\n",
-           {"'contact.tangential.restitution'", "(0, 1]"});
-  const std::string friction = "contact: {tangential: {model: linear_history, friction: 0.5}, rolling: ";
+  error_of(
+      kBase + "contact: {tangential: {model: linear_history, friction: 0.5, restitution: 0}}\n",
+      {"'contact.tangential.restitution'", "(0, 1]"});
+  const std::string friction =
+      "contact: {tangential: {model: linear_history, friction: 0.5}, rolling: ";
   error_of(kBase + friction + "{model: epsd}}\n", {"'contact.rolling.friction'", "required"});
-  error_of(kBase + friction + "{model: epsd, friction: 1.5}}\n", {"'contact.rolling.friction'", "[0, 1]"});
+  error_of(kBase + friction + "{model: epsd, friction: 1.5}}\n",
+           {"'contact.rolling.friction'", "[0, 1]"});
   error_of(kBase + friction + "{model: epsd, friction: 0.1, damping_ratio: -1}}\n",
            {"'contact.rolling.damping_ratio'", "[0, inf]"});
   // the registry has no rolling resistance without friction
@@ -557,11 +605,11 @@ TEST(SceneContactParts, TangentialAndRollingKeys) {
 // --set overrides
 
 TEST(SceneOverrides, NestedKeyListIndexAndYamlValues) {
-  const Scene sc = load_scene_text(kBase, kFile,
-                                   {"fluid.density=1200", "species.0.density=3000",
-                                    "particles.0.position=[0.001, 0.003, 0.002]",
-                                    "domain.size=[0.004,0.004,0.008]", "drag.law=di_felice",
-                                    "particles.0.rigid=true", "name=renamed"});
+  const Scene sc = load_scene_text(
+      kBase, kFile,
+      {"fluid.density=1200", "species.0.density=3000", "particles.0.position=[0.001, 0.003, 0.002]",
+       "domain.size=[0.004,0.004,0.008]", "drag.law=di_felice", "particles.0.rigid=true",
+       "name=renamed"});
   EXPECT_EQ(sc.fluid.density, 1200);
   EXPECT_EQ(sc.species[0].density, 3000);
   EXPECT_EQ(sc.particles[0].position, (std::array<double, 3>{0.001, 0.003, 0.002}));
@@ -571,7 +619,9 @@ TEST(SceneOverrides, NestedKeyListIndexAndYamlValues) {
   EXPECT_EQ(sc.name, "renamed");
   // One element of a YAML list.
   // (the list must be in the file: a missing 'gravity' would be created as a map).
-  EXPECT_EQ(load_scene_text(kBase + "gravity: [0, 0, -9.81]\n", kFile, {"gravity.2=-1.62"}).gravity[2], -1.62);
+  EXPECT_EQ(
+      load_scene_text(kBase + "gravity: [0, 0, -9.81]\n", kFile, {"gravity.2=-1.62"}).gravity[2],
+      -1.62);
   error_of(kBase, {"gravity.2=-1.62"}, {"'gravity'", "list of 3 numbers"});
 }
 
@@ -586,7 +636,8 @@ particles:
 
 TEST(SceneOverrides, CreatesMissingMapsAndLaterOnesWin) {
   // kBase has no startup: or time: map.
-  const Scene sc = load_scene_text(kBase, kFile, {"startup.relax_steps=7", "time.end=0.1", "time.end=0.2"});
+  const Scene sc =
+      load_scene_text(kBase, kFile, {"startup.relax_steps=7", "time.end=0.1", "time.end=0.2"});
   EXPECT_EQ(sc.startup.relax_steps, 7);
   EXPECT_EQ(sc.startup.damping, 0.02);
   EXPECT_EQ(sc.time.end, 0.2);
@@ -603,8 +654,8 @@ TEST(SceneOverrides, BadAssignments) {
   error_of(kBase, {"fluid.density"}, {kFile, "--set 'fluid.density'", "expected key.path=value"});
   error_of(kBase, {"=5"}, {"--set '=5'", "expected key.path=value"});
   error_of(kBase, {"fluid.density=[1,"}, {"--set", "not valid YAML"});
-  error_of(kBase, {"particles.3.species=glass"}, {kFile, "--set 'particles.3.species=glass'", "'3'",
-                                                  "index in [0, 1)"});
+  error_of(kBase, {"particles.3.species=glass"},
+           {kFile, "--set 'particles.3.species=glass'", "'3'", "index in [0, 1)"});
   error_of(kBase, {"particles.first.species=glass"}, {"'first'", "index in [0, 1)"});
   error_of(kBase + "gravity: [0, 0, -9.81]\n", {"gravity.3=1"}, {"'3'", "index in [0, 3)"});
 }
@@ -657,8 +708,9 @@ TEST(SceneRoundTrip, ReloadsToTheSameScene) {
   EXPECT_EQ(b.contact.rolling.friction, 0.12);
   EXPECT_EQ(b.contact.rolling.damping_ratio, 0.25);
   // damping-based tangential part, and the off state, round-trip too
-  for (const std::string& t : {std::string("{model: linear_history, damping: 3.0e-7, friction: 0.2}"),
-                               std::string("{model: none}")}) {
+  for (const std::string& t :
+       {std::string("{model: linear_history, damping: 3.0e-7, friction: 0.2}"),
+        std::string("{model: none}")}) {
     const Scene c = load_scene_text(kBase, kFile, {"contact.tangential=" + t});
     const Scene d = load_scene_text(scene_to_yaml(c), "case.yaml");
     expect_same_scene(c, d, 0.0);
@@ -724,7 +776,8 @@ TEST(SceneLoaderProblems, NonScalarKeyIsASceneError) {
 // "must be in (0, inf] (got 0)", a value the file never gave; it should say the key
 // is required.
 TEST(SceneLoaderProblems, MissingRequiredKeySaysRequired) {
-  const std::string msg = error_of("species: [{name: glass, density: 2500}]\n", {"'species.0.diameter'"});
+  const std::string msg =
+      error_of("species: [{name: glass, density: 2500}]\n", {"'species.0.diameter'"});
   EXPECT_TRUE(contains(msg, "required") || contains(msg, "missing")) << msg;
 }
 
@@ -785,15 +838,21 @@ TEST(SceneSizeLaws, LoadedAsGiven) {
 TEST(SceneSizeLaws, Errors) {
   const std::string sp = "species:\n  - {name: s, density: 2500, size_distribution: ";
   auto law = [&](const std::string& m) { return sp + m + "}\n"; };
-  error_of("species: [{name: s, density: 2500, diameter: 1.0e-4, size_distribution: {law: uniform, min: 1, max: 2}}]\n",
-           {kFile, "'species.0.size_distribution'", "not both"});
-  error_of("species: [{name: s, density: 2500}]\n", {"'species.0.diameter'", "required", "size_distribution"});
+  error_of(
+      "species: [{name: s, density: 2500, diameter: 1.0e-4, size_distribution: {law: uniform, min: "
+      "1, max: 2}}]\n",
+      {kFile, "'species.0.size_distribution'", "not both"});
+  error_of("species: [{name: s, density: 2500}]\n",
+           {"'species.0.diameter'", "required", "size_distribution"});
   error_of(law("{min: 1.0e-4}"), {"'species.0.size_distribution.law'", "required"});
-  error_of(law("{law: weibull}"), {"'species.0.size_distribution.law'", "list, uniform, normal, lognormal", "weibull"});
+  error_of(law("{law: weibull}"),
+           {"'species.0.size_distribution.law'", "list, uniform, normal, lognormal", "weibull"});
   error_of(law("{law: uniform, min: 1.0e-4, max: 2.0e-4, mean: 1.5e-4}"),
            {"'species.0.size_distribution.mean'", "unknown key", "allowed here"});
-  error_of(law("{law: uniform, min: 2.0e-4, max: 1.0e-4}"), {"'species.0.size_distribution.max'", "> min"});
-  error_of(law("{law: uniform, min: 0, max: 1.0e-4}"), {"'species.0.size_distribution.min'", "(0, inf]"});
+  error_of(law("{law: uniform, min: 2.0e-4, max: 1.0e-4}"),
+           {"'species.0.size_distribution.max'", "> min"});
+  error_of(law("{law: uniform, min: 0, max: 1.0e-4}"),
+           {"'species.0.size_distribution.min'", "(0, inf]"});
   error_of(law("{law: uniform, max: 1.0e-4}"), {"'species.0.size_distribution.min'", "required"});
   error_of(law("{law: list, diameters: [1.0e-4, 2.0e-4], fractions: [0.5], basis: number}"),
            {"'species.0.size_distribution.fractions'", "one entry per diameter"});
@@ -811,7 +870,8 @@ TEST(SceneSizeLaws, Errors) {
            {"'species.0.size_distribution.basis'", "required", "number or volume"});
   error_of(law("{law: list, diameters: [1.0e-4], fractions: [1], basis: mass}"),
            {"'species.0.size_distribution.basis'", "number, volume"});
-  error_of(law("{law: normal, mean: 1.0e-4, min: 5.0e-5, max: 1.5e-4}"), {"'species.0.size_distribution.std'", "required"});
+  error_of(law("{law: normal, mean: 1.0e-4, min: 5.0e-5, max: 1.5e-4}"),
+           {"'species.0.size_distribution.std'", "required"});
   error_of(law("{law: normal, mean: 1.0e-4, std: 1.0e-5, min: 1.5e-4, max: 1.6e-4}"),
            {"'species.0.size_distribution.min'", "keeps only", "at least 0.1 %"});
   error_of(law("{law: lognormal, median: 1.0e-4, sigma_ln: 0, min: 5.0e-5, max: 1.5e-4}"),
@@ -821,14 +881,18 @@ TEST(SceneSizeLaws, Errors) {
   error_of(sp + "5}\n", {"'species.0.size_distribution'", "map"});
   // Lattice and single groups need one diameter.
   const std::string psd = law("{law: uniform, min: 8.0e-5, max: 1.2e-4}");
-  error_of(psd + "particles: [{type: lattice, species: s, min: [0, 0, 0], max: [0.004, 0.004, 0.002]}]\n",
-           {"'particles.0.species'", "size_distribution", "lattice"});
-  error_of(psd + "particles: [{type: single, species: s}]\n", {"'particles.0.species'", "size_distribution"});
+  error_of(
+      psd +
+          "particles: [{type: lattice, species: s, min: [0, 0, 0], max: [0.004, 0.004, 0.002]}]\n",
+      {"'particles.0.species'", "size_distribution", "lattice"});
+  error_of(psd + "particles: [{type: single, species: s}]\n",
+           {"'particles.0.species'", "size_distribution"});
 }
 
 TEST(SceneSizeLaws, ExpectedSpeedFromTheLargestSphere) {
-  const std::string yaml = "species: [{name: s, density: 2500, size_distribution: {law: uniform, min: 5.0e-5, "
-                           "max: 3.0e-4}}]\n";
+  const std::string yaml =
+      "species: [{name: s, density: 2500, size_distribution: {law: uniform, min: 5.0e-5, "
+      "max: 3.0e-4}}]\n";
   const Scene sc = load_scene_text(yaml, kFile);
   EXPECT_DOUBLE_EQ(sc.fluid.expected_speed, 1500 * 9.81 * 3e-4 * 3e-4 / (18 * 8.9e-4));
 }
@@ -856,37 +920,52 @@ particles:
   EXPECT_EQ(b.hi, sc.box.hi);
   EXPECT_TRUE(b.rigid);
   // One name in a list, fractions optional.
-  EXPECT_EQ(load_scene_text(yaml, kFile, {"particles.1.species=[light]", "particles.1.fractions=[1]"})
-                .particles[1].mixture, (std::vector<std::string>{"light"}));
+  EXPECT_EQ(
+      load_scene_text(yaml, kFile, {"particles.1.species=[light]", "particles.1.fractions=[1]"})
+          .particles[1]
+          .mixture,
+      (std::vector<std::string>{"light"}));
 }
 
 TEST(SceneRandomGroup, Errors) {
-  const std::string head = "species: [{name: glass, diameter: 1.0e-4, density: 2500}, "
-                           "{name: light, diameter: 1.0e-4, density: 1500}]\nparticles:\n";
+  const std::string head =
+      "species: [{name: glass, diameter: 1.0e-4, density: 2500}, "
+      "{name: light, diameter: 1.0e-4, density: 1500}]\nparticles:\n";
   auto group = [&](const std::string& g) { return head + "  - {type: random, " + g + "}\n"; };
   error_of(group("voidage: 0.9"), {kFile, "'particles.0.species'", "required"});
   error_of(group("species: sand"), {"'particles.0.species'", "'sand'", "not a species"});
-  error_of(group("species: [glass, sand], fractions: [0.5, 0.5]"), {"'particles.0.species.1'", "'sand'"});
-  error_of(group("species: [glass, glass], fractions: [0.5, 0.5]"), {"'particles.0.species.1'", "twice"});
+  error_of(group("species: [glass, sand], fractions: [0.5, 0.5]"),
+           {"'particles.0.species.1'", "'sand'"});
+  error_of(group("species: [glass, glass], fractions: [0.5, 0.5]"),
+           {"'particles.0.species.1'", "twice"});
   error_of(group("species: []"), {"'particles.0.species'", "non-empty list"});
   error_of(group("species: {a: 1}"), {"'particles.0.species'", "species name"});
-  error_of(group("species: [glass, light]"), {"'particles.0.fractions'", "required", "number fraction"});
-  error_of(group("species: [glass, light], fractions: [1]"), {"'particles.0.fractions'", "one entry per species"});
-  error_of(group("species: [glass, light], fractions: [0.5, 0.4]"), {"'particles.0.fractions'", "sum to 1"});
-  error_of(group("species: [glass, light], fractions: [1.5, -0.5]"), {"'particles.0.fractions.0'", "(0, 1]"});
+  error_of(group("species: [glass, light]"),
+           {"'particles.0.fractions'", "required", "number fraction"});
+  error_of(group("species: [glass, light], fractions: [1]"),
+           {"'particles.0.fractions'", "one entry per species"});
+  error_of(group("species: [glass, light], fractions: [0.5, 0.4]"),
+           {"'particles.0.fractions'", "sum to 1"});
+  error_of(group("species: [glass, light], fractions: [1.5, -0.5]"),
+           {"'particles.0.fractions.0'", "(0, 1]"});
   error_of(group("species: glass, voidage: 0.3"), {"'particles.0.voidage'", "[0.36, 1)"});
   error_of(group("species: glass, voidage: 1"), {"'particles.0.voidage'", "[0.36, 1)"});
-  error_of(group("species: glass, seed: -1"), {"'particles.0.seed'", "whole number", "[0, 9223372036854775807]"});
+  error_of(group("species: glass, seed: -1"),
+           {"'particles.0.seed'", "whole number", "[0, 9223372036854775807]"});
   error_of(group("species: glass, seed: 1.5"), {"'particles.0.seed'", "whole number"});
   error_of(group("species: glass, position: [0, 0, 0]"), {"'particles.0.position'", "unknown key"});
   error_of(group("species: glass, min: [0, 0, 0.002], max: [0.004, 0.004, 0.001]"),
            {"'particles.0.max'", "min < max"});
   // seed and fractions belong to random groups and mixed lattices only.
-  error_of(head + "  - {type: lattice, species: glass, seed: 1}\n", {"'particles.0.seed'", "unknown key"});
-  error_of(head + "  - {type: lattice, species: glass, fractions: [1]}\n", {"'particles.0.fractions'", "unknown"});
-  error_of(head + "  - {type: lattice, species: [glass, light]}\n", {"'particles.0.fractions'", "required"});
-  error_of(head + "  - {type: lattice, species: [glass, light], fractions: [0.5, 0.5], seed: 1.5}\n",
-           {"'particles.0.seed'", "whole number"});
+  error_of(head + "  - {type: lattice, species: glass, seed: 1}\n",
+           {"'particles.0.seed'", "unknown key"});
+  error_of(head + "  - {type: lattice, species: glass, fractions: [1]}\n",
+           {"'particles.0.fractions'", "unknown"});
+  error_of(head + "  - {type: lattice, species: [glass, light]}\n",
+           {"'particles.0.fractions'", "required"});
+  error_of(
+      head + "  - {type: lattice, species: [glass, light], fractions: [0.5, 0.5], seed: 1.5}\n",
+      {"'particles.0.seed'", "whole number"});
 }
 
 TEST(SceneRandomGroup, KynchLineFromTheSuspension) {
@@ -897,7 +976,8 @@ particles: [{type: random, species: glass, min: [0, 0, 0], max: [0.004, 0.004, 0
 insitu: {reference_velocity: 0}
 )";
   const Scene sc = load_scene_text(yaml, kFile);
-  EXPECT_NEAR(sc.insitu.reference_velocity, 4.912e-3, 0.001e-3);  // eq. 4.4 at eps = 0.9 (physics.md §5)
+  EXPECT_NEAR(sc.insitu.reference_velocity, 4.912e-3,
+              0.001e-3);  // eq. 4.4 at eps = 0.9 (physics.md §5)
 }
 
 TEST(SceneRandomGroup, PlacedThroughPlaceParticlesWithPerSphereMass) {
@@ -924,7 +1004,8 @@ particles: [{type: random, species: sand, min: [0, 0, 0], max: [0.004, 0.004, 0.
     solid += s.volume(i);
   }
   EXPECT_LE(std::abs(2.0 * small - static_cast<double>(s.size())), 1.0);
-  EXPECT_NEAR(1 - solid / (0.004 * 0.004 * 0.002), 0.9, 0.5 * M_PI * 1.728e-12 / 6.0 / (0.004 * 0.004 * 0.002));
+  EXPECT_NEAR(1 - solid / (0.004 * 0.004 * 0.002), 0.9,
+              0.5 * M_PI * 1.728e-12 / 6.0 / (0.004 * 0.004 * 0.002));
 }
 
 // ---------------------------------------------------------------------------------
@@ -946,20 +1027,26 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
                             "type: lattice, species: glass, zz_unknown: 1")},
       {"particles.N.", edit(kBase, "type: single, species: glass, position: [0.002, 0.002, 0.0048]",
                             "type: random, species: glass, zz_unknown: 1")},
-      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: list, "
-                                       "diameters: [1], fractions: [1], basis: number, zz_unknown: 1}}]\n"},
-      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: uniform, "
-                                       "min: 1, max: 2, zz_unknown: 1}}]\n"},
-      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: normal, "
-                                       "mean: 1, std: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
-      {"species.N.size_distribution.", "species: [{name: g, density: 1, size_distribution: {law: lognormal, "
-                                       "median: 1, sigma_ln: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.",
+       "species: [{name: g, density: 1, size_distribution: {law: list, "
+       "diameters: [1], fractions: [1], basis: number, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.",
+       "species: [{name: g, density: 1, size_distribution: {law: uniform, "
+       "min: 1, max: 2, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.",
+       "species: [{name: g, density: 1, size_distribution: {law: normal, "
+       "mean: 1, std: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
+      {"species.N.size_distribution.",
+       "species: [{name: g, density: 1, size_distribution: {law: lognormal, "
+       "median: 1, sigma_ln: 1, min: 1, max: 2, zz_unknown: 1}}]\n"},
       {"contact.", "contact: {zz_unknown: 1}\n"},
       {"contact.tangential.", "contact: {tangential: {zz_unknown: 1}}\n"},
-      {"contact.tangential.", "contact: {tangential: {model: linear_history, friction: 0.5, zz_unknown: 1}}\n"},
+      {"contact.tangential.",
+       "contact: {tangential: {model: linear_history, friction: 0.5, zz_unknown: 1}}\n"},
       {"contact.rolling.", "contact: {rolling: {zz_unknown: 1}}\n"},
-      {"contact.rolling.", "contact: {tangential: {model: linear_history, friction: 0.5}, "
-                           "rolling: {model: epsd, friction: 0.1, zz_unknown: 1}}\n"},
+      {"contact.rolling.",
+       "contact: {tangential: {model: linear_history, friction: 0.5}, "
+       "rolling: {model: epsd, friction: 0.1, zz_unknown: 1}}\n"},
       {"drag.", "drag: {zz_unknown: 1}\n"},
       {"coupling.", "coupling: {zz_unknown: 1}\n"},
       {"time.", "time: {zz_unknown: 1}\n"},
@@ -978,28 +1065,36 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
   }
   EXPECT_GT(n, 40u);
   for (const auto& p : shipped_cases())
-    EXPECT_TRUE(contains(readme, "`" + p.filename().string() + "`")) << "cases/README.md does not list " << p;
+    EXPECT_TRUE(contains(readme, "`" + p.filename().string() + "`"))
+        << "cases/README.md does not list " << p;
   for (const auto& c : RunLog::columns({SpeciesSpec{"NAME", 1e-4, 2500, {}}}))
-    EXPECT_TRUE(contains(readme, "`" + c + "`")) << "cases/README.md does not list log column " << c;
+    EXPECT_TRUE(contains(readme, "`" + c + "`"))
+        << "cases/README.md does not list log column " << c;
 }
 
 // coupling.voidage_smoothing: the double smoothing keys only with `double`, names checked.
 TEST(SceneCoupling, DoubleSmoothingKeys) {
-  const std::string two = "species: [{name: big, diameter: 2.0e-4, density: 2500}, "
-                          "{name: small, diameter: 1.0e-4, density: 2500}]\n";
+  const std::string two =
+      "species: [{name: big, diameter: 2.0e-4, density: 2500}, "
+      "{name: small, diameter: 1.0e-4, density: 2500}]\n";
   const Scene d = load_scene_text(two, kFile, {"coupling.voidage_smoothing=double"});
   EXPECT_TRUE(d.double_smoothing.enabled);
-  EXPECT_EQ(d.double_smoothing.big_species, std::vector<std::string>{"big"});  // the largest by default
+  EXPECT_EQ(d.double_smoothing.big_species,
+            std::vector<std::string>{"big"});  // the largest by default
   EXPECT_EQ(d.double_smoothing.h_over_d, 1.5);
   EXPECT_FALSE(load_scene_text(two, kFile).double_smoothing.enabled);
-  error_of(two, {"coupling.voidage_smoothing=triple"}, {"'coupling.voidage_smoothing'", "single", "double"});
-  error_of(two, {"coupling.big_h_over_d=2"}, {"'coupling.big_h_over_d'", "voidage_smoothing: double"});
+  error_of(two, {"coupling.voidage_smoothing=triple"},
+           {"'coupling.voidage_smoothing'", "single", "double"});
+  error_of(two, {"coupling.big_h_over_d=2"},
+           {"'coupling.big_h_over_d'", "voidage_smoothing: double"});
   error_of(two, {"coupling.voidage_smoothing=double", "coupling.big_species=[huge]"},
            {"'coupling.big_species.0'", "species"});
-  error_of(two, {"coupling.voidage_smoothing=double", "coupling.big_h_over_d=9"}, {"'coupling.big_h_over_d'", "[0.5, 5]"});
-  const Scene back = load_scene_text(scene_to_yaml(load_scene_text(two, kFile, {"coupling.voidage_smoothing=double",
-                                                                                "coupling.big_h_over_d=2"})),
-                                     kFile);
+  error_of(two, {"coupling.voidage_smoothing=double", "coupling.big_h_over_d=9"},
+           {"'coupling.big_h_over_d'", "[0.5, 5]"});
+  const Scene back = load_scene_text(
+      scene_to_yaml(load_scene_text(
+          two, kFile, {"coupling.voidage_smoothing=double", "coupling.big_h_over_d=2"})),
+      kFile);
   EXPECT_TRUE(back.double_smoothing.enabled);
   EXPECT_EQ(back.double_smoothing.h_over_d, 2.0);
 }

@@ -53,7 +53,7 @@ Column make_column() {
     f.P[i] = 500.0 * (1.0 + u(rng));
     f.cs[i] = 10.0 * (1.0 + 0.1 * u(rng));
     f.p_term[i] = f.P[i] / (f.rho[i] * f.rho[i]);  // the halo's; owned ones are recomputed
-    f.kind[i] = i % 7 == 3 ? kWall : kFluid;  // walls among them: no density diffusion
+    f.kind[i] = i % 7 == 3 ? kWall : kFluid;       // walls among them: no density diffusion
     f.eps[i] = 0.7 + 0.3 * std::abs(u(rng));
     f.diffusion_psi[i] = f.kind[i] == kFluid ? 2.0 * u(rng) : 0.0;
     f.diffusion_volume[i] = f.kind[i] == kFluid ? f.mass[i] / f.rho[i] : 0.0;
@@ -81,7 +81,8 @@ double brute_force_diffusion(const FluidParticles& f, const DensityDiffusion& dd
     if (b == a) continue;
     const double dx = f.x[a] - f.x[b], dy = f.y[a] - f.y[b], dz = f.z[a] - f.z[b];
     const double r2 = dx * dx + dy * dy + dz * dz;
-    const double minus_f = -0.5 * (kernel::grad_factor(r2, f.h[a]) + kernel::grad_factor(r2, f.h[b]));
+    const double minus_f =
+        -0.5 * (kernel::grad_factor(r2, f.h[a]) + kernel::grad_factor(r2, f.h[b]));
     const double term = (f.diffusion_psi[b] - f.diffusion_psi[a]) * minus_f * f.diffusion_volume[b];
     sum += term;
     scale += std::abs(term);
