@@ -114,12 +114,22 @@ struct BeetstraPolydisperse {
   }
 };
 
-using DragLaw =
-    std::variant<Stokes, DiFeliceDallavalle, CoulsonRichardson, BrownLawler, BeetstraPolydisperse>;
+// No drag: the fluid and the spheres exchange only the pressure (and, interpolated, the
+// viscous) forces. A measuring device, not a physical law: the fluid's own viscous
+// operator at eps < 1 among fixed spheres (viscosity_validation), which the drag of a
+// packed bed would otherwise swamp by three orders of magnitude.
+struct NoDrag {
+  double coefficient(double /*eps*/, double /*us*/, double /*d*/, const Fluid& /*f*/) const {
+    return 0.0;
+  }
+};
+
+using DragLaw = std::variant<Stokes, DiFeliceDallavalle, CoulsonRichardson, BrownLawler,
+                             BeetstraPolydisperse, NoDrag>;
 
 // The one registry of drag-law names used by scene files.
-inline const char* const kDragLawNames[] = {"stokes", "di_felice", "coulson_richardson",
-                                            "brown_lawler", "beetstra"};
+inline const char* const kDragLawNames[] = {"stokes",       "di_felice", "coulson_richardson",
+                                            "brown_lawler", "beetstra",  "none"};
 
 // Drag coefficient of sphere of diameter d where the local Sauter mean is d_sauter: the
 // polydisperse law uses it, the single-sphere laws do not.
@@ -143,6 +153,8 @@ inline bool drag_law_from_name(const std::string& name, DragLaw& out) {
     out = BrownLawler{};
   else if (name == "beetstra")
     out = BeetstraPolydisperse{};
+  else if (name == "none")
+    out = NoDrag{};
   else
     return false;
   return true;

@@ -10,6 +10,7 @@ namespace sphdem {
 
 double terminal_speed(const drag::DragLaw& law, double d, double rho_p, double rho_f, double mu,
                       double g) {
+  if (std::holds_alternative<drag::NoDrag>(law)) return HUGE_VAL;  // nothing holds it back
   const double weight = std::abs(rho_p - rho_f) * g * M_PI * d * d * d / 6.0;
   const drag::Fluid fluid{rho_f, mu};
   double lo = 0.0, hi = std::max(10.0 * weight / (3.0 * M_PI * mu * d), 1e-12);  // 10 x Stokes

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iterator>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -184,6 +185,13 @@ TEST(DragLaw, NameRoundTrip) {
   EXPECT_EQ(std::size(kDragLawNames), std::variant_size_v<DragLaw>);
 }
 
+// `none` exchanges no drag at any slip or voidage (the viscosity measurement among fixed
+// spheres relies on it).
+TEST(DragLaw, NoneIsZeroEverywhere) {
+  for (double eps : {0.4, 1.0})
+    for (double u : {0.0, 1e-3, 1.0}) EXPECT_EQ(NoDrag{}.coefficient(eps, u, kD, kWater), 0.0);
+}
+
 TEST(DragLaw, UnknownNameRejected) {
   for (const char* bad : {"", "Stokes", "difelice", "di_felice ", "Beetstra", "beetstra2007"}) {
     DragLaw law = BrownLawler{};
@@ -281,7 +289,10 @@ TEST(DragLaw, CoefficientsPassMatchesTheLawWithEitherInstructionSet) {
               const double us = std::sqrt(usx * usx + usy * usy + usz * usz);
               const double expected =
                   drag_coefficient(l, e, us, 2.0 * s.radius[j], s.d_sauter[j], kWater);
-              ASSERT_GT(expected, 0.0);
+              if (std::is_same_v<std::decay_t<decltype(l)>, NoDrag>)
+                ASSERT_EQ(expected, 0.0);
+              else
+                ASSERT_GT(expected, 0.0);
               if (isa == sphdem::PairIsa::kBaseline)
                 EXPECT_EQ(c[j], expected) << kDragLawNames[law_index] << " sphere " << j;
               else

@@ -19,26 +19,46 @@ namespace {
 // 2 sqrt(nu t) <= 1.4 mm here, stays below 1 % there (erfc(3.0/1.4) = 0.002), and the
 // top 0.8 mm, where the free surface truncates the kernel, is left out too.
 // The fit runs over [t0, t1] in units of the decay time 1/(nu k^2).
+// With `voidage` < 1 the fluid fills a simple-cubic lattice of fixed spheres (heavy,
+// no gravity, no drag: `drag.law: none`) at that voidage, and the wave must decay at
+// mu / (eps rho_f) k^2: (2.32) for uniform eps is eps rho_f du/dt = mu lap u.
 struct ShearWave {
   double viscosity = 0.02, sound_speed = 1.0, alpha_artificial = 0.0;
   double t0 = 0.1, t1 = 0.8;
+  double voidage = 1.0, sphere_diameter = 1.0e-4;
 };
 
-double measured_viscosity(const ShearWave& w) {
-  const std::string yaml = fmt::format(R"(
+struct Decay {
+  double nu = 0;   // fitted k^-2 d(-ln A)/dt (m^2/s)
+  double eps = 1;  // mean voidage of the fitted band's fluid particles
+};
+
+Decay measured_decay(const ShearWave& w) {
+  std::string yaml =
+      fmt::format(R"(
 name: shear_wave
 domain: {{size: [0.0016, 0.0048, 0.0072]}}
 gravity: [0, 0, 0]
 fluid: {{density: 1000, viscosity: {}, spacing: 2.0e-4, smoothing_factor: 1.5, sound_speed: {},
         alpha_artificial: {}}}
-startup: {{relax_steps: 0}}
+startup: {{relax_steps: {}}}
 time: {{end: 10.0}}
 )",
-                                       w.viscosity, w.sound_speed, w.alpha_artificial);
+                  w.viscosity, w.sound_speed, w.alpha_artificial, w.voidage < 1.0 ? 100 : 0);
+  if (w.voidage < 1.0)
+    yaml += fmt::format(R"(
+species: [{{name: fixed, diameter: {}, density: 1.0e12}}]
+particles:
+  - {{type: lattice, species: fixed, voidage: {}, min: [0, 0, 0], max: [0.0016, 0.0048, 0.0072],
+     rigid: true}}
+drag: {{law: none}}
+)",
+                        w.sphere_diameter, w.voidage);
   const Scene sc = load_scene_text(yaml, "shear_wave.yaml");
   Simulation sim(sc);
+  if (w.voidage < 1.0) sim.relax();
   const double L = sc.box.length(1), k = 2.0 * M_PI / L, U = 1e-3;
-  const double nu = sc.fluid.viscosity / sc.fluid.density, tau = 1.0 / (nu * k * k);
+  const double nu = sc.fluid.viscosity / (w.voidage * sc.fluid.density), tau = 1.0 / (nu * k * k);
   FluidParticles& f = sim.fluid();
   for (std::size_t a = 0; a < f.n_owned; ++a)
     if (f.kind[a] == kFluid) f.vx[a] = U * std::sin(k * f.y[a]);
@@ -53,6 +73,17 @@ time: {{end: 10.0}}
     }
     return num / den;
   };
+  Decay out;
+  {
+    double sum = 0;
+    int count = 0;
+    for (std::size_t a = 0; a < f.n_owned; ++a)
+      if (f.kind[a] == kFluid && f.z[a] >= 0.0030 && f.z[a] <= 0.0064) {
+        sum += f.eps[a];
+        ++count;
+      }
+    out.eps = sum / count;
+  }
   double st = 0, sl = 0, stt = 0, stl = 0;
   int n = 0;
   while (sim.time() < w.t1 * tau) {
@@ -66,7 +97,12 @@ time: {{end: 10.0}}
     ++n;
   }
   const double slope = (n * stl - st * sl) / (n * stt - st * st);
-  return -slope / (k * k);
+  out.nu = -slope / (k * k);
+  return out;
+}
+
+double measured_viscosity(const ShearWave& w) {
+  return measured_decay(w).nu;
 }
 
 }  // namespace
@@ -117,7 +153,40 @@ TEST(Viscosity, WaterAtTheSixMillimetreCasesResolution) {
       "with alpha = 0.02 nu = %.4g m^2/s (%.2f x mu/rho_f; the Monaghan part %.3g = %.2f of alpha "
       "h c0/10)\n",
       c0, nu0, 100 * (nu0 / nu - 1), nu_a, nu_a / nu, nu_a - nu0, (nu_a - nu0) / full);
+  RecordProperty("morris_error", fmt::format("{:+.4f}", nu0 / nu - 1));
   EXPECT_NEAR(nu0 / nu, 1.0, 0.05);
   EXPECT_GT(nu_a - nu0, 0.0);
   EXPECT_LT(nu_a - nu0, full);
+}
+
+// Issue 14's matrix: the viscosity at eps = 0.6, at the 6 mm cases' h (dx = 0.2 mm) and
+// c0, with the defaults (Morris alone, alpha 0), among fixed spheres on a lattice. The
+// SPH viscous term divides by the superficial density eps rho_f, so the wave decays at
+// mu / (eps rho_f) k^2; a term written with rho_f, or carrying eps inside the
+// divergence's sum, would be off by the factor eps (40 %). Effective viscosity
+// mu_eff = eps rho_f nu_measured, with eps the band's mean. The spheres are 200 um (the
+// cases' are 100 um: 8 times the spheres, 4 times the run) on a lattice 0.22 mm apart,
+// finer than dx = 0.2 mm's kernel (support 0.71 mm). Measured when written: -2.2 % (as
+// -2.2 % at eps = 1); with 300 um spheres (d/dx = 1.5, 0.33 mm apart) +63 %: the fluid
+// particles then feel each sphere's hole in eps and lose the wave's energy to it, the
+// averaged equations' limit d < dx.
+TEST(Viscosity, WaterAmongFixedSpheresAtVoidageSixTenths) {
+  ShearWave w;
+  w.viscosity = 8.9e-4;
+  w.sound_speed = 3.431;
+  w.t0 = 0.05;
+  w.t1 = 0.3;
+  w.voidage = 0.6;
+  w.sphere_diameter = 2.0e-4;
+  const Decay d = measured_decay(w);
+  const double mu_eff = d.eps * 1000.0 * d.nu;
+  std::printf(
+      "eps = %.4f (lattice 0.6, spheres %.0f um): nu = %.4g m^2/s, mu/(eps rho_f) = %.4g; "
+      "mu_eff = eps rho_f nu = %.4g Pa s (%+.2f %% of mu)\n",
+      d.eps, 1e6 * w.sphere_diameter, d.nu, 8.9e-4 / (d.eps * 1000.0), mu_eff,
+      100 * (mu_eff / 8.9e-4 - 1));
+  RecordProperty("voidage", fmt::format("{:.4f}", d.eps));
+  RecordProperty("mu_eff_error", fmt::format("{:+.4f}", mu_eff / 8.9e-4 - 1));
+  EXPECT_NEAR(d.eps, 0.6, 0.01);
+  EXPECT_NEAR(mu_eff / 8.9e-4, 1.0, 0.05);
 }
