@@ -13,6 +13,7 @@
 #include "propagator/simulation.hpp"
 #include "run/run_log.hpp"
 #include "run/safeguard_tally.hpp"
+#include "scene/contact_stiffness_rule.hpp"
 
 namespace sphdem {
 
@@ -84,6 +85,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   double dem_sphere_steps = 0;
   const double end = scene.time.end;
   RunSummary r;
+  double largest_overlap = 0;  // over the logged steps, / d
   while (sim.time() < end * (1.0 - 1e-12)) {
     const auto t_step = Clock::now();
     sim.step();
@@ -92,7 +94,9 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
     const bool last = sim.time() >= end * (1.0 - 1e-12);
     if (sim.time() >= next_log * (1.0 - 1e-9) || last) {
-      log.write(diagnostics(sim));
+      const Diagnostics d = diagnostics(sim);
+      largest_overlap = std::max(largest_overlap, d.max_overlap_over_d);
+      log.write(d);
       while (next_log <= sim.time() * (1.0 + 1e-9)) next_log += scene.output.log_interval;
     }
     run_hooks(last);
@@ -132,6 +136,15 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
                           100.0 * hk.seconds / std::max(step_seconds, 1e-30));
   }
   if (out) *out << "sphdem: " << r.safeguards.describe(sim.fluid().n_owned) << "\n";
+  r.largest_overlap = largest_overlap;
+  if (out && sim.spheres().n_owned > 0)
+    *out << fmt::format("sphdem: largest overlap over the logged steps {:.3g} d{}\n",
+                        largest_overlap,
+                        largest_overlap > scene.contact.max_overlap
+                            ? fmt::format(" -- above contact.max_overlap = {}: a stiffer spring "
+                                          "(contact.stiffness) or a slower impact",
+                                          scene.contact.max_overlap)
+                            : fmt::format(" (contact.max_overlap {})", scene.contact.max_overlap));
   if (out)
     *out << fmt::format(
         "sphdem: done, {} steps to t = {:.4e} s in {} ({:.3g} SPH particle-steps/s)\n", r.steps,
@@ -192,8 +205,18 @@ std::string describe_scene(const Scene& sc) {
   const int sub = sp.n_owned == 0
                       ? 0
                       : 2 * std::max(1, static_cast<int>(std::ceil(0.5 * dt / sim.dt_dem_max())));
-  s += fmt::format("contact time     t_c = {:.4g} s (k = {} N/m)\n", sim.contact_time(),
-                   sc.contact.normal.k);
+  s += fmt::format("contact time     t_c = {:.4g} s (k = {} N/m{})\n", sim.contact_time(),
+                   sc.contact.normal.k,
+                   sc.contact.stiffness_reason.empty() ? "" : "; " + sc.contact.stiffness_reason);
+  if (!sc.species.empty()) {
+    const StiffnessChoice c = choose_contact_stiffness(sc);
+    const double scale = std::sqrt(c.k / sc.contact.normal.k);  // overlaps at this scene's k
+    s += fmt::format(
+        "overlaps         expected largest {:.2g} d at impact ({:.3g} m/s), {:.2g} d under the "
+        "sediment's weight (log.csv max_overlap_over_d; contact.max_overlap = {})\n",
+        c.impact_overlap * scale, c.impact_speed, c.static_overlap * c.k / sc.contact.normal.k,
+        sc.contact.max_overlap);
+  }
   const TangentialParams& tp = sc.contact.tangential;
   if (tp.model == TangentialParams::Model::kLinearHistory)
     s += fmt::format("friction         linear_history: k_t = {:.4g} N/m, mu = {}, {}\n",
@@ -205,7 +228,7 @@ std::string describe_scene(const Scene& sc) {
                      sc.contact.rolling.damping_ratio);
   s += fmt::format(
       "time steps       dt_SPH = {:.4g} s (CFL {}), dt_DEM = {:.4g} s, {} DEM sub-steps per SPH "
-      "step\n",
+      "step (more where the spheres' drag relaxes them faster: 0.1 m/(c eps) at run time)\n",
       dt, sc.time.cfl, sub > 0 ? dt / sub : 0.0, sub);
   s += fmt::format(
       "run              {} relaxation steps, then t = 0 .. {} s: about {:.0f} SPH steps\n",

@@ -36,6 +36,7 @@ struct RunSummary {
   double fluid_particle_steps_per_second = 0;
   double sphere_particle_steps_per_second = 0;  // sphere sub-steps counted
   SafeguardTally safeguards;                    // every step's floor and clamp counts
+  double largest_overlap = 0;                   // / d, over the logged steps
 };
 
 RunSummary run_scene(const Scene& scene, RunOptions options);

@@ -65,10 +65,14 @@ struct ParticleGroupSpec {
 };
 
 struct ContactSpec {
+  // normal.k: a number, or auto (the default; scene/contact_stiffness_rule.hpp), which the
+  // loader resolves and records in stiffness_reason.
   LinearSpringDashpot normal{10.0, 0.0, -1.0, false};
-  TangentialParams tangential;  // model none unless the scene turns friction on
-  RollingParams rolling;        // model none unless the scene turns rolling resistance on
-  double skin = 0.3;            // Verlet skin as a fraction of the largest diameter
+  double max_overlap = 0.01;     // the largest overlap / d the automatic stiffness allows
+  std::string stiffness_reason;  // what auto chose and why (empty when the file gave k)
+  TangentialParams tangential;   // model none unless the scene turns friction on
+  RollingParams rolling;         // model none unless the scene turns rolling resistance on
+  double skin = 0.3;             // Verlet skin as a fraction of the largest diameter
 };
 
 struct TimeSpec {

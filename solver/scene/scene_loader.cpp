@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "coupling/hindered_settling.hpp"
+#include "scene/contact_stiffness_rule.hpp"
 #include "scene/kernel_width_rule.hpp"
 #include "scene/scene.hpp"
 
@@ -363,7 +364,7 @@ void resolve_sphere_kernel(Scene& sc, bool kernel_auto, bool drag_kernel_given) 
 Scene parse(const YAML::Node& root, const std::string& file) {
   Scene sc;
   sc.source = file;
-  bool kernel_auto = true, drag_kernel_given = false;
+  bool kernel_auto = true, drag_kernel_given = false, stiffness_auto = true;
   MapReader top(root, "", file);
   top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles",
               "contact", "drag", "coupling", "time", "startup", "output", "insitu"});
@@ -533,7 +534,11 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     MapReader r(top.child("contact"), "contact", file);
     r.choice("model", "linear_spring_dashpot", {"linear_spring_dashpot"});
     LinearSpringDashpot& n = sc.contact.normal;
-    n.k = r.number("stiffness", n.k, 0.0, kInf, true);
+    // a number, or auto (the default): resolved below once the fluid and drag are known
+    stiffness_auto = !r.has("stiffness") ||
+                     (r.child("stiffness").IsScalar() && r.child("stiffness").Scalar() == "auto");
+    if (!stiffness_auto) n.k = r.number("stiffness", n.k, 0.0, kInf, true);
+    sc.contact.max_overlap = r.number("max_overlap", sc.contact.max_overlap, 0.0, 0.2, true);
     const bool has_damping = r.has("damping"), has_e = r.has("restitution");
     if (has_damping && has_e)
       r.fail("contact.restitution", "give either 'damping' (kg/s) or 'restitution', not both");
@@ -712,6 +717,11 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     sc.fluid.sound_speed = 10.0 * std::max(um, 1e-6);
   }
   resolve_sphere_kernel(sc, kernel_auto, drag_kernel_given);
+  if (stiffness_auto) {
+    const StiffnessChoice c = choose_contact_stiffness(sc);
+    sc.contact.normal.k = c.k;
+    sc.contact.stiffness_reason = c.reason;
+  }
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
   if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = sc.fluid.spacing;
@@ -855,7 +865,8 @@ std::string scene_to_yaml(const Scene& sc) {
   else
     e << YAML::Key << "damping" << YAML::Value << n.beta;
   e << YAML::Key << "clip_attraction" << YAML::Value << n.clip_attraction << YAML::Key << "skin"
-    << YAML::Value << sc.contact.skin;
+    << YAML::Value << sc.contact.skin << YAML::Key << "max_overlap" << YAML::Value
+    << sc.contact.max_overlap;
   const TangentialParams& tp = sc.contact.tangential;
   e << YAML::Key << "tangential" << YAML::Value << YAML::BeginMap;
   if (tp.model == TangentialParams::Model::kNone) {

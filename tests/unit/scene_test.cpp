@@ -312,7 +312,10 @@ TEST(SceneDefaults, EmptyTextGivesTheDefaults) {
   EXPECT_EQ(sc.fluid.wall_layers, 3);
   EXPECT_TRUE(sc.species.empty());
   EXPECT_TRUE(sc.particles.empty());
-  EXPECT_EQ(sc.contact.normal.k, 10.0);
+  // contact.stiffness: auto, here with nothing to move or weigh (contact_stiffness_rule_test)
+  EXPECT_EQ(sc.contact.normal.k, 1.0);
+  EXPECT_FALSE(sc.contact.stiffness_reason.empty());
+  EXPECT_EQ(sc.contact.max_overlap, 0.01);
   EXPECT_EQ(sc.contact.normal.beta, 0.0);
   EXPECT_LT(sc.contact.normal.restitution, 0.0);  // damping given (default 0), not restitution
   EXPECT_FALSE(sc.contact.normal.clip_attraction);
