@@ -156,11 +156,16 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
   const drag::Fluid& fluid = p_.fluid;
   double* const drag_c = drag_c_.data();
   const PairIsa isa = isa_;
-#pragma omp parallel if (n > kMinParallelSpheres)
+  double rate_max = 0.0;
+#pragma omp parallel if (n > kMinParallelSpheres) reduction(max : rate_max)
   {
     const auto [begin, end] = thread_rows(contacts_.offset, n, row_cost());
-    if constexpr (!std::is_same_v<Drag, NoFluid>)
+    if constexpr (!std::is_same_v<Drag, NoFluid>) {
       drag_coefficients(drag, s, fluid, begin, end, drag_c, isa);
+      // d f / d v = -c eps (f = c u_s, u_s = eps (u_f - v), 2.74): the relaxation rate
+      for (std::size_t j = begin; j < end; ++j)
+        rate_max = std::max(rate_max, drag_c[j] * s.eps[j] / s.mass[j]);
+    }
     for (std::size_t j = begin; j < end; ++j) {
       const ContactRow c =
           contact_row(s, contacts_, contact, bf, history_, images, 0.0, dt_springs, j);
@@ -185,6 +190,7 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
       s.az[j] = (c.fz + fz) * inv_m + g[2];
     }
   }
+  drag_rate_max_ = rate_max;
 }
 
 // Rigid groups share their total force equally (thesis §4.5).
@@ -228,7 +234,11 @@ void DemSubstepper::half_step(double dt, bool first_half) {
   DemParticles& s = s_;
   if (s.n_owned == 0) return;
   const long n = static_cast<long>(s.n_owned);
-  const int per_half = std::max(1, static_cast<int>(std::ceil(0.5 * dt / p_.dt_max)));
+  // dt_max (contacts, Stokes time) and the drag relaxation at the last force pass
+  const double drag_bound =
+      drag_rate_max_ > 0.0 ? p_.drag_time_fraction / drag_rate_max_ : p_.dt_max;
+  const double h_max = std::min(p_.dt_max, drag_bound);
+  const int per_half = std::max(1, static_cast<int>(std::ceil(0.5 * dt / h_max)));
   const double h = 0.5 * dt / per_half;
   dt_ = h;
   substeps_ = 2 * per_half;

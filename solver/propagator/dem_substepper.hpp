@@ -38,7 +38,10 @@ class DemSubstepper {
   std::vector<ContactHistory::Record> contact_records() const {
     return history_.records(s_, contacts_);
   }
-  double dt() const { return dt_; }           // the last sub-step
+  double dt() const { return dt_; }  // the last sub-step
+  // The largest drag relaxation rate c eps / m over the spheres in the last force pass
+  // (0 before the first, and without fluid); carried from one step to the next.
+  double drag_rate_max() const { return drag_rate_max_; }
   int substeps() const { return substeps_; }  // per SPH step
   // Sphere halo and contact list builds so far: a list into the halo is stale once it changes.
   long list_builds() const { return list_builds_; }
@@ -92,6 +95,7 @@ class DemSubstepper {
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
   int n_groups_ = 0;
   double dt_ = 0;
+  double drag_rate_max_ = 0;  // sets the next half step's sub-step with dt_max
   int substeps_ = 0;
   long list_builds_ = 0;
 };

@@ -46,6 +46,10 @@ struct DemStepParams {
   bool rotation = false;  // tangential or rolling parts: contact history and spin on
   double skin = 0.3;      // contact Verlet skin / largest diameter
   double contact_time = 0, dt_max = 0;  // scene/time_step.hpp
+  // A sub-step also stays below this fraction of the shortest drag relaxation time
+  // m / (c eps) at the spheres' own voidage and Reynolds number (as dt_max does of the
+  // Stokes time): a sediment's drag is ~10 times Stokes'.
+  double drag_time_fraction = 0.1;
   std::array<double, 3> gravity{};
   bool fluid_force = true;  // false: dry DEM, no fluid and so no fluid force
   drag::DragLaw drag;
