@@ -1403,6 +1403,134 @@ SCENES = [
 
 
 # ----------------------------------------------------------------------------------------
+# The regime matrix (issue 14): every regime with the same defaults
+# ----------------------------------------------------------------------------------------
+# Three regimes are measured by validation gtests, not by sphdem runs (a shear wave's
+# initial field, a bed without gravity, the sand column's base loads): each records its
+# numbers with RecordProperty, ctest writes them to BUILD/GTEST_XML/<test>.xml
+# (tests/validation/CMakeLists.txt) before this report runs, and the report runs a test
+# itself when its file is missing or older than the test's executable.
+GTEST_XML = os.path.join("tests", "validation", "gtest-xml")
+
+
+def gtest_results(build, test, nice=0):
+    """{'Suite.Name': (passed, {property: value})} of the validation test `test`'s last run."""
+    import xml.etree.ElementTree as ET
+    exe = os.path.join(build, "tests", "validation", test)
+    xml = os.path.join(build, GTEST_XML, test + ".xml")
+    if not os.access(exe, os.X_OK):
+        return None
+    if not os.path.exists(xml) or os.path.getmtime(xml) < os.path.getmtime(exe):
+        os.makedirs(os.path.dirname(xml), exist_ok=True)
+        print(f"[matrix] running {test} (no record newer than its executable)", flush=True)
+        cmd = ([] if not nice else ["nice", "-n", str(nice)]) + [exe, f"--gtest_output=xml:{xml}"]
+        subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        if not os.path.exists(xml):
+            return None
+    out = {}
+    for case in ET.parse(xml).getroot().iter("testcase"):
+        props = {k: v for k, v in case.attrib.items()}
+        for prop in case.iter("property"):
+            props[prop.get("name")] = prop.get("value")
+        passed = case.find("failure") is None and case.get("result", "completed") == "completed"
+        out[f"{case.get('classname')}.{case.get('name')}"] = (passed, props)
+    return out
+
+
+class Regime:
+    """One row of the matrix: the report rows it reads ((scene, quantity prefix), with the
+    row's own verdict, or (scene, prefix, target) judged here on |error|) and the gtests (test, 'Suite.Name', [(property, label), ...]); `elsewhere` names what the mode
+    does not run (the longer runs and the commands that make them)."""
+
+    def __init__(self, regime, scene, criterion, rows=(), gtests=(), elsewhere=""):
+        self.regime, self.scene, self.criterion = regime, scene, criterion
+        self.rows, self.gtests, self.elsewhere = rows, gtests, elsewhere
+
+    def evaluate(self, report_rows, build, nice):
+        measured, statuses = [], []
+        for scene, prefix, *target in self.rows:
+            for r in report_rows:
+                if r.scene != scene or not r.quantity.startswith(prefix):
+                    continue
+                if target:  # the matrix's own criterion on a row the report only informs with
+                    ok = r.error is not None and math.isfinite(r.error) and abs(r.error) <= target[0]
+                    measured.append(f"{r.quantity}: {r.simulated} ({fmt_err(r)}; matrix target "
+                                    f"{100 * target[0]:g} %)")
+                    statuses.append("PASS" if ok else "FAIL")
+                elif r.target is not None:
+                    measured.append(f"{r.quantity}: {r.simulated} ({fmt_err(r)})")
+                    statuses.append(r.status)
+        for test, name, props in self.gtests:
+            res = gtest_results(build, test, nice)
+            if res is None or name not in res:
+                measured.append(f"{test} {name}: no result")
+                statuses.append("FAIL")
+                continue
+            passed, values = res[name]
+            shown = ", ".join(f"{label} {values.get(key, '?')}" for key, label in props)
+            measured.append(f"{shown} (ctest {test}, {name})")
+            statuses.append("PASS" if passed else "FAIL")
+        if not statuses:
+            status = "NOT RUN"
+        elif "FAIL" in statuses:
+            status = "FAIL"
+        elif "MISS" in statuses:
+            status = "MISS"
+        elif "SKIP" in statuses and "PASS" not in statuses:
+            status = "SKIP"
+        else:
+            status = "PASS"
+        return measured, status
+
+
+MATRIX = [
+    Regime("one 100 µm sphere released 1, 7 and 30 mm deep", "single_particle",
+           "slip within 1 % of (4.1) at each depth", rows=[("single_particle", "superficial slip")],
+           elsewhere="7 and 30 mm deep: the sweeps of bench/TRADEOFF.md (commands there)"),
+    Regime("one 2.8 mm grain in a 1 m water column (c0 ≈ 44 m/s)", "inertial grain",
+           "terminal slip within 2 % of Brown–Lawler",
+           elsewhere="bench/TRADEOFF.md (the grain's sweep and its command; ~1 h a run)"),
+    Regime("blocks ε = 0.9 and 0.8, 2 and 4 mm tall", "block_monodisperse",
+           "infinite-block slip within 2 % of (4.4)", rows=[("block_monodisperse", "ε = 0.8, infinite-block", 0.02)]),
+    Regime("the monodisperse suspension", "suspension_monodisperse",
+           "interface within 8 % of Kynch; a sediment forms and comes to rest (density error < 1 %, fluid kinetic "
+           "energy decaying, sediment voidage 0.36–0.45)",
+           rows=[("suspension_monodisperse", "interface velocity −dz_top/dt"),
+                 ("suspension_monodisperse", "final sediment voidage"),
+                 ("suspension_monodisperse", "largest overlap")],
+           elsewhere="the sediment at rest: the full report; the shipped case to 1 s (~7 h on 2 cores) not run"),
+    Regime("a packed bed under clear water", "packed-bed stability",
+           "fluid kinetic energy stays at round-off over 0.1 s",
+           gtests=[("packed_bed_stability_validation", "PackedBedAtRest.CandidateDefaultsStayAtRest",
+                    [("defaults_kinetic_energy_end_J", "fluid kinetic energy at 0.12 s (J)")])]),
+    Regime("the reduced sand column", "cases/sand_column_reduced.yaml",
+           "bed at rest; the base's loads close the momentum balance",
+           gtests=[("sand_column_validation", "SandColumn.BaseLoadsCloseTheMomentumBalance",
+                    [("worst_window_error", "worst window's imbalance / eq. 15"),
+                     ("at_rest_error", "at rest")]),
+                   ("sand_column_validation", "SandColumn.BedBulkDensityMatchesZhao",
+                    [("bed_mean_speed_m_per_s", "mean sphere speed at the end (m/s)")])],
+           elsewhere="the grains' mean speed against Masliyah (the 1 m column's first 0.3 s, full report)"),
+    Regime("viscosity at ε = 1 and ε = 0.6", "decaying shear wave (spheres fixed)",
+           "effective viscosity within 5 % of μ at the 6 mm cases' h and c0",
+           gtests=[("viscosity_validation", "Viscosity.WaterAtTheSixMillimetreCasesResolution",
+                    [("morris_error", "ε = 1: μ_eff/μ − 1")]),
+                   ("viscosity_validation", "Viscosity.WaterAmongFixedSpheresAtVoidageSixTenths",
+                    [("voidage", "ε"), ("mu_eff_error", "μ_eff/μ − 1")])]),
+]
+
+
+def matrix_markdown(entries):
+    out = ["## Regime matrix (issue 14): every regime with the same defaults", "",
+           "No scene of the matrix sets a coupling key; the values are this report's rows and the validation tests' records.", "",
+           "| regime | scene | criterion | measured | status | not in this run |", "|---|---|---|---|---|---|"]
+    for reg, measured, status in entries:
+        cells = [reg.regime, reg.scene, reg.criterion, "; ".join(measured) or "–", status, reg.elsewhere or "–"]
+        out.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
+    return out + [""]
+
+
+# ----------------------------------------------------------------------------------------
 # Report
 # ----------------------------------------------------------------------------------------
 class Context:
@@ -1450,7 +1578,7 @@ def fmt_target(row):
     return f"≤ {row.target:g} × limit" if row.ratio else f"≤ {100 * row.target:.3g} %"
 
 
-def write_markdown(path, rows, args, total_wall, figures, started):
+def write_markdown(path, rows, args, total_wall, figures, started, matrix=()):
     commit = sh(["git", "rev-parse", "--short", "HEAD"])
     dirty = " (with uncommitted changes)" if sh(["git", "status", "--porcelain", "--untracked-files=no"]) else ""
     out = ["# Validation report", "",
@@ -1465,6 +1593,7 @@ def write_markdown(path, rows, args, total_wall, figures, started):
            f"- result: **{sum(r.status == 'PASS' for r in rows)} pass, {sum(r.status == 'FAIL' for r in rows)} fail, "
            f"{sum(r.status == 'MISS' for r in rows)} target missed for a measured reason (MISS)**, "
            f"{sum(r.status == 'INFO' for r in rows)} informative, {sum(r.status == 'SKIP' for r in rows)} skipped", "",
+           ] + (matrix_markdown(matrix) if matrix else []) + ["## Every row", "",
            "Error = simulated / reference − 1 unless the quantity says otherwise; a row passes when |error| ≤ target. "
            "Wall time is that of the run the row reads (rows of one run share it).", "",
            "| scene | quantity | reference | source | simulated | error | target | status | resolution | wall (s) |",
@@ -1539,14 +1668,21 @@ def main():
     if args.reuse:  # the runs' own wall times as recorded, not this re-evaluation's
         total = run_wall
 
+    matrix = []
+    if not args.scenes:  # the matrix needs every scene's rows
+        for reg in MATRIX:
+            measured, status = reg.evaluate(rows, os.path.abspath(args.build), args.nice)
+            matrix.append((reg, measured, status))
+            print(f"[matrix] {status:7s} {reg.regime}: " + "; ".join(measured))
     path = os.path.join(args.out, "VALIDATION.md")
-    write_markdown(path, rows, args, total, ctx.figures, started)
+    write_markdown(path, rows, args, total, ctx.figures, started, matrix)
     width = max(len(r.quantity) for r in rows)
     for r in rows:
         print(f"{r.status:4s}  {r.scene:24s} {r.quantity:{width}s}  ref {r.reference:30s} sim {r.simulated:28s} "
               f"err {fmt_err(r):>9s} target {fmt_target(r)}")
     print(f"[report] {path}: {summary_line(rows)}; total wall {total:.0f} s")
-    return exit_status(rows, args.strict)
+    matrix_failed = any(status == "FAIL" for _, _, status in matrix)
+    return 1 if matrix_failed else exit_status(rows, args.strict)
 
 
 def summary_line(rows):
