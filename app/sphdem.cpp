@@ -26,7 +26,8 @@ namespace {
 // The figures of a run directory (finished or interrupted), by pipelines/figures.py
 // under Debian's python3 (which has numpy, matplotlib and h5py).
 int make_figures(const std::string& dir) {
-  const std::string cmd = fmt::format("/usr/bin/python3 '{}/figures.py' '{}'", SPHDEM_PIPELINES_DIR, dir);
+  const std::string cmd =
+      fmt::format("/usr/bin/python3 '{}/figures.py' '{}'", SPHDEM_PIPELINES_DIR, dir);
   const int rc = std::system(cmd.c_str());
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : 1;
 }
@@ -40,10 +41,12 @@ int main(int argc, char** argv) {
   std::string case_file = SPHDEM_DEFAULT_CASE, out_dir = "out";
   std::vector<std::string> overrides;
   bool no_insitu = false;
-  auto* run = app.add_subcommand("run", "run a scene (default: the monodisperse block)");
+  auto* run = app.add_subcommand(
+      "run", "run a scene (default: cases/sedimentation.yaml, a suspension settling to rest)");
   run->add_option("case", case_file, "scene file (YAML)")->check(CLI::ExistingFile);
   run->add_option("--out,-o", out_dir, "output directory")->capture_default_str();
-  run->add_option("--set", overrides, "override a scene key, e.g. --set time.end=0.01")->allow_extra_args(false);
+  run->add_option("--set", overrides, "override a scene key, e.g. --set time.end=0.01")
+      ->allow_extra_args(false);
   run->add_flag("--no-insitu", no_insitu, "skip the in-situ analysis and figures");
 
   auto* check = app.add_subcommand("check", "validate a scene and print its derived numbers");
@@ -69,9 +72,9 @@ int main(int argc, char** argv) {
 #ifdef SPHDEM_HAVE_CATALYST
     std::unique_ptr<sphdem::InSitu> insitu;
     std::unique_ptr<sphdem::VtkSnapshots> snapshots;
-    const sphdem::GridSpec grid =
-        sphdem::column_voidage_grid(scene.box.length(0), scene.box.length(1), scene.fill_height(),
-                                    scene.insitu.grid_spacing, scene.fluid.smoothing_factor * scene.fluid.spacing);
+    const sphdem::GridSpec grid = sphdem::column_voidage_grid(
+        scene.box.length(0), scene.box.length(1), scene.fill_height(), scene.insitu.grid_spacing,
+        scene.fluid.smoothing_factor * scene.fluid.spacing);
     std::vector<double> voidage;
     if (scene.insitu.enabled && !no_insitu && !scene.insitu.pipelines.empty()) {
       sphdem::InSituOptions io;
@@ -100,14 +103,17 @@ int main(int argc, char** argv) {
       insitu_ran = true;
     }
     if (scene.output.vtk_every > 0) {
-      snapshots = std::make_unique<sphdem::VtkSnapshots>((std::filesystem::path(out_dir) / "vtk").string(), 0, 1);
-      opt.hooks.push_back({"VTK snapshots", scene.output.vtk_every, [&](const sphdem::Simulation& sim) {
-                             snapshots->write(sim.fluid(), sim.spheres(), sim.time(), sim.step_count());
-                           }});
+      snapshots = std::make_unique<sphdem::VtkSnapshots>(
+          (std::filesystem::path(out_dir) / "vtk").string(), 0, 1);
+      opt.hooks.push_back(
+          {"VTK snapshots", scene.output.vtk_every, [&](const sphdem::Simulation& sim) {
+             snapshots->write(sim.fluid(), sim.spheres(), sim.time(), sim.step_count());
+           }});
     }
 #else
     if (scene.output.vtk_every > 0 || (scene.insitu.enabled && !no_insitu))
-      std::cerr << "sphdem: note: built without ParaView (SPHDEM_WITH_PARAVIEW=OFF): no in-situ analysis or VTK output\n";
+      std::cerr << "sphdem: note: built without ParaView (SPHDEM_WITH_PARAVIEW=OFF): no in-situ "
+                   "analysis or VTK output\n";
 #endif
     std::string failure;
     try {

@@ -7,7 +7,6 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
-#include <vtkSOADataArrayTemplate.h>
 #include <vtkTypeInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -16,7 +15,9 @@ namespace sphdem {
 namespace {
 
 // The pipelines only read, so the const_cast is never written through.
-double* mut(const double* p) { return const_cast<double*>(p); }
+double* mut(const double* p) {
+  return const_cast<double*>(p);
+}
 
 vtkSmartPointer<vtkDoubleArray> scalar_view(const char* name, const double* data, vtkIdType n) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
@@ -25,14 +26,21 @@ vtkSmartPointer<vtkDoubleArray> scalar_view(const char* name, const double* data
   return a;
 }
 
-vtkSmartPointer<vtkSOADataArrayTemplate<double>> vector_view(const char* name, const double* x, const double* y,
-                                                             const double* z, vtkIdType n) {
-  auto a = vtkSmartPointer<vtkSOADataArrayTemplate<double>>::New();
-  if (name) a->SetName(name);
+// Vectors copied into VTK's interleaved layout: the Python pipelines (numpy) and the
+// renderers ask an array for a raw pointer, which a structure-of-arrays view rebuilds
+// on every call (and VTK warns about each time).
+vtkSmartPointer<vtkDoubleArray> vector_copy(const char* name, const double* x, const double* y,
+                                            const double* z, vtkIdType n) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
   a->SetNumberOfComponents(3);
-  a->SetArray(0, mut(x), n, /*updateMaxId=*/true, /*save=*/true);
-  a->SetArray(1, mut(y), n, false, true);
-  a->SetArray(2, mut(z), n, false, true);
+  a->SetNumberOfTuples(n);
+  double* xyz = a->GetPointer(0);
+  for (vtkIdType i = 0; i < n; ++i) {
+    xyz[3 * i] = x[i];
+    xyz[3 * i + 1] = y[i];
+    xyz[3 * i + 2] = z[i];
+  }
   return a;
 }
 
@@ -40,7 +48,8 @@ vtkSmartPointer<vtkSOADataArrayTemplate<double>> vector_view(const char* name, c
 // coordinates are copied into VTK's interleaved layout: rendering and several filters
 // ask points for a raw pointer, which a structure-of-arrays view would rebuild on
 // every call.
-vtkSmartPointer<vtkPolyData> point_cloud(const double* x, const double* y, const double* z, vtkIdType n) {
+vtkSmartPointer<vtkPolyData> point_cloud(const double* x, const double* y, const double* z,
+                                         vtkIdType n) {
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> pts;
   pts->SetDataTypeToDouble();
@@ -76,7 +85,7 @@ vtkSmartPointer<vtkPolyData> fluid_view(const FluidParticles& f) {
   const vtkIdType n = static_cast<vtkIdType>(f.n_owned);
   auto pd = point_cloud(f.x.data(), f.y.data(), f.z.data(), n);
   vtkPointData* p = pd->GetPointData();
-  p->AddArray(vector_view("velocity", f.vx.data(), f.vy.data(), f.vz.data(), n));
+  p->AddArray(vector_copy("velocity", f.vx.data(), f.vy.data(), f.vz.data(), n));
   p->AddArray(scalar_view("density", f.rho.data(), n));
   p->AddArray(scalar_view("voidage", f.eps.data(), n));
   p->AddArray(scalar_view("pressure", f.P.data(), n));
@@ -89,13 +98,13 @@ vtkSmartPointer<vtkPolyData> fluid_view(const FluidParticles& f) {
   return pd;
 }
 
-vtkSmartPointer<vtkPolyData> sphere_view(const DemParticles& s, const std::vector<int>* contact_count,
-                                         SphereCopies& c) {
+vtkSmartPointer<vtkPolyData> sphere_view(const DemParticles& s,
+                                         const std::vector<int>* contact_count, SphereCopies& c) {
   const vtkIdType n = static_cast<vtkIdType>(s.n_owned);
   auto pd = point_cloud(s.x.data(), s.y.data(), s.z.data(), n);
   vtkPointData* p = pd->GetPointData();
-  p->AddArray(vector_view("velocity", s.vx.data(), s.vy.data(), s.vz.data(), n));
-  p->AddArray(vector_view("fluid_force", s.fx.data(), s.fy.data(), s.fz.data(), n));
+  p->AddArray(vector_copy("velocity", s.vx.data(), s.vy.data(), s.vz.data(), n));
+  p->AddArray(vector_copy("fluid_force", s.fx.data(), s.fy.data(), s.fz.data(), n));
   c.diameter.resize(n);
   c.density.resize(n);
   c.species.resize(n);

@@ -1,7 +1,8 @@
 # script-version: 2
 """snapshots: off-screen PNG renders of the column every SPHDEM_SNAPSHOT_EVERY
-analyses: spheres as points coloured by species, and a translucent slice of the
-voidage field through the middle of the column. DIR/insitu/snapshots/column_NNNNNN.png.
+analyses: the spheres drawn as spheres of their own diameter, coloured by speed, a
+translucent slice of the voidage field through the middle of the column, and the time.
+DIR/insitu/snapshots/column_NNNNNN.png.
 Loaded only when a display is available (sphdem starts Xvfb when DISPLAY is unset)."""
 import os
 import sys
@@ -9,7 +10,7 @@ import sys
 sys.path.insert(0, os.environ.get("SPHDEM_PIPELINES_DIR", "."))
 from paraview import catalyst
 from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction, GetScalarBar, ResetCamera,
-                             SaveScreenshot, Show, Slice, TrivialProducer)
+                             SaveScreenshot, Show, Slice, Text, TrivialProducer)
 
 import sphdem_insitu as si
 
@@ -45,13 +46,31 @@ bar.Title = "voidage"
 bar.ComponentTitle = ""
 bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
 
+# Each sphere a shaded sphere of radius d/2 (point Gaussian with the sphere shader: one
+# impostor per sphere, no glyph geometry), coloured by |v|.
 spheres = Show(particles, view)
-spheres.SetRepresentationType("Points")
-spheres.RenderPointsAsSpheres = 1
-spheres.PointSize = 4.0
-ColorBy(spheres, ("POINTS", "species"))
-species_lut = GetColorTransferFunction("species")
-species_lut.ApplyPreset("Set1", True) if hasattr(species_lut, "ApplyPreset") else None
+spheres.SetRepresentationType("Point Gaussian")
+spheres.ShaderPreset = "Sphere"
+spheres.ScaleByArray = 1
+spheres.UseScaleFunction = 0
+spheres.SetScaleArray = ["POINTS", "diameter"]
+spheres.GaussianRadius = 0.5
+ColorBy(spheres, ("POINTS", "velocity", "Magnitude"))
+speed_lut = GetColorTransferFunction("velocity")
+speed_lut.ApplyPreset("Viridis (matplotlib)", True)
+spheres.SetScalarBarVisibility(view, True)
+speed_bar = GetScalarBar(speed_lut, view)
+speed_bar.Title = "sphere speed (m/s)"
+speed_bar.ComponentTitle = ""
+speed_bar.TitleColor = speed_bar.LabelColor = [0.0, 0.0, 0.0]
+speed_bar.WindowLocation = "Any Location"
+speed_bar.Position = [0.02, 0.62]
+
+clock = Text(registrationName="clock")
+clock_display = Show(clock, view)
+clock_display.Color = [0.0, 0.0, 0.0]
+clock_display.FontSize = 16
+clock_display.WindowLocation = "Upper Left Corner"  # the tests read the middle columns
 
 state = {"count": 0}
 
@@ -62,6 +81,14 @@ def catalyst_execute(info):
     if k % si.SNAPSHOT_EVERY:
         return
     data = si.local_data(voidage, info.time)
+    view.ViewTime = info.time  # the producers' time: VTK warns when the view asks for an older one
+    clock.Text = "t = %.3f s" % info.time
+    # the speed scale: up to twice the Kynch speed where the scene gives one, else the frame's
+    u_ref = float(si.field(data, "reference_velocity")[0])
+    if u_ref > 0:
+        speed_lut.RescaleTransferFunction(0.0, 2.0 * u_ref)
+    else:
+        spheres.RescaleTransferFunctionToDataRange(False, True)
     box = si.field(data, "box")
     cut.SliceType.Origin = [0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), 0.5 * (box[4] + box[5])]
     if not state.get("camera"):

@@ -11,6 +11,9 @@ namespace sphdem {
 
 namespace {
 
+// The largest contact force in a random packing over the mean load on d^2 (with margin).
+constexpr double kForceChains = 4.0;
+
 // delta_max omega0 / v of a linear spring-dashpot with restitution e (2.46-2.47): with
 // beta = 2 m12 eta and eta/omega = a = -ln(e)/pi, exp(-a asin(1/sqrt(1 + a^2))).
 // 1 without a restitution (a fixed dashpot: the undamped bound).
@@ -79,7 +82,7 @@ StiffnessChoice choose_contact_stiffness(const Scene& sc) {
   p /= sc.box.length(0) * sc.box.length(1);
   double d_big = 0.0;
   for (const SpeciesSpec& s : sc.species) d_big = std::max(d_big, s.d_max());
-  k_static = p * d_big / f;
+  k_static = kForceChains * p * d_big / f;
   const double raw = std::max(k_impact, k_static);
   if (!(raw > 0.0)) {  // nothing moves nor weighs: any spring will do
     c.k = 1.0;
@@ -89,7 +92,8 @@ StiffnessChoice choose_contact_stiffness(const Scene& sc) {
     c.k = std::ceil(raw / scale * (1.0 - 1e-12)) * scale;  // up to two significant digits
     c.reason = fmt::format(
         "auto: the softest k for overlaps <= {} d (contact.max_overlap): impact at {:.3g} m/s "
-        "needs {:.3g} N/m, the sediment's buoyant weight ({:.3g} Pa on the floor) {:.3g} N/m",
+        "needs {:.3g} N/m, the sediment's buoyant weight ({:.3g} Pa on the floor, its force "
+        "chains 4 times the mean load) {:.3g} N/m",
         f, c.impact_speed, k_impact, p, k_static);
   }
   c.impact_overlap = std::sqrt(k_impact / c.k) * f;  // overlap scales as 1/sqrt(k)

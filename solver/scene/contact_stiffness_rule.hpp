@@ -8,9 +8,11 @@
 //    so k = m (c v / (f d))^2 with c the damping's factor (1 without a restitution);
 //    v is the drag law's terminal speed in clear fluid (free fall from the top without
 //    fluid) or a group's initial speed, whichever is larger;
-//  - at rest under the sediment: the bottom sphere carries the buoyant weight of the
-//    solid above its d^2 of floor, p d^2 with p = sum (rho_p - rho_f) g V_solid / A, so
-//    k = p d / f.
+//  - at rest under the sediment: a bottom sphere carries on average the buoyant weight
+//    of the solid above its d^2 of floor, p d^2 with p = sum (rho_p - rho_f) g V_solid / A,
+//    but the contact forces of a random packing spread with an exponential tail (force
+//    chains), so the largest is a few times the mean: k = C p d / f with C = 4 (the
+//    default scene's sediment at rest: largest overlap 2.8 p d^2 / k; bench/TRADEOFF.md).
 // Each species counts with its largest sphere (the largest m v^2 and p d). The DEM step
 // then follows from t_c (scene/time_step.hpp). A softer spring means fewer DEM sub-steps:
 // the reason this is the default.

@@ -3,7 +3,8 @@
 // sphere on the wall at a known speed (the overlap it reaches must be just under the
 // limit: the rule is the softest such k, rounded up to two digits, so within 5 % of the
 // limit); the terminal
-// speed and the static load by their closed forms.
+// speed and the static load by their closed forms (the largest overlap of a sediment at
+// rest, with its force chains, is measured on the default scene: bench/TRADEOFF.md).
 #include "scene/contact_stiffness_rule.hpp"
 
 #include <gtest/gtest.h>
@@ -79,7 +80,7 @@ contact: {damping: 0}
   EXPECT_NEAR(c.impact_speed, v, 1e-9 * v);
   const double k_impact = m * std::pow(v / (f * d), 2);
   const double p = 1500 * g * 0.002 * 0.002 * 0.003 * 0.1 / (0.002 * 0.002);
-  const double k_static = p * d / f;
+  const double k_static = 4 * p * d / f;  // force chains: 4 times the mean load
   const double k = std::max(k_impact, k_static);
   EXPECT_GE(c.k, k);
   EXPECT_LT(c.k, 1.1 * k);
