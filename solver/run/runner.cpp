@@ -14,6 +14,7 @@
 #include "run/run_log.hpp"
 #include "run/safeguard_tally.hpp"
 #include "scene/contact_stiffness_rule.hpp"
+#include "scene/sound_speed_rule.hpp"
 
 namespace sphdem {
 
@@ -85,7 +86,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   double dem_sphere_steps = 0;
   const double end = scene.time.end;
   RunSummary r;
-  double largest_overlap = 0;  // over the logged steps, / d
+  double largest_overlap = 0, largest_density_error = 0;  // over the logged steps
   while (sim.time() < end * (1.0 - 1e-12)) {
     const auto t_step = Clock::now();
     sim.step();
@@ -96,6 +97,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     if (sim.time() >= next_log * (1.0 - 1e-9) || last) {
       const Diagnostics d = diagnostics(sim);
       largest_overlap = std::max(largest_overlap, d.max_overlap_over_d);
+      largest_density_error = std::max(largest_density_error, d.max_density_error);
       log.write(d);
       while (next_log <= sim.time() * (1.0 + 1e-9)) next_log += scene.output.log_interval;
     }
@@ -137,6 +139,13 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   }
   if (out) *out << "sphdem: " << r.safeguards.describe(sim.fluid().n_owned) << "\n";
   r.largest_overlap = largest_overlap;
+  r.largest_density_error = largest_density_error;
+  if (out && sim.fluid().n_owned > 0)
+    *out << fmt::format(
+        "sphdem: largest density error over the logged steps {:.2g} % (expected {:.2g} % from c0; "
+        "limit 1 %{})\n",
+        100 * largest_density_error, 100 * sound_speed_report(scene).expected_density_error(),
+        largest_density_error > 0.01 ? ": raise fluid.sound_speed" : "");
   if (out && sim.spheres().n_owned > 0)
     *out << fmt::format("sphdem: largest overlap over the logged steps {:.3g} d{}\n",
                         largest_overlap,
@@ -194,6 +203,14 @@ std::string describe_scene(const Scene& sc) {
       "{:.4g} m/s\n",
       sc.fluid.density, sc.fluid.viscosity, sc.fluid.sound_speed, sim.eos().B,
       sc.fluid.expected_speed);
+  if (sc.fluid.enabled) {
+    const SoundSpeedReport c = sound_speed_report(sc);
+    s += fmt::format(
+        "sound speed      c0 = {:.4g} m/s: Mach u_m/c0 = {:.3g}, expected density error {:.2g} % "
+        "(Ma^2 = {:.2g} %, the column's weight g H/c0^2 = {:.2g} %; limit 1 %, log.csv "
+        "max_density_error)\n",
+        c.c0, c.mach, 100 * c.expected_density_error(), 100 * c.flow, 100 * c.hydrostatic);
+  }
   s += fmt::format("drag law         {}\n", drag::drag_law_name(sc.drag));
   s += fmt::format(
       "coupling         {}{}, spheres' kernel H = {} h, the drag's {} h{}\n",

@@ -37,6 +37,7 @@ struct RunSummary {
   double sphere_particle_steps_per_second = 0;  // sphere sub-steps counted
   SafeguardTally safeguards;                    // every step's floor and clamp counts
   double largest_overlap = 0;                   // / d, over the logged steps
+  double largest_density_error = 0;             // |rho/rho0 - 1|, over the logged steps
 };
 
 RunSummary run_scene(const Scene& scene, RunOptions options);

@@ -14,6 +14,7 @@
 #include "analysis/pore_pressure.hpp"
 #include "propagator/simulation.hpp"
 #include "scene/scene.hpp"
+#include "scene/sound_speed_rule.hpp"
 
 using namespace sphdem;
 
@@ -65,6 +66,13 @@ TEST(Hydrostatic, ColumnAtRestKeepsPressureHeightAndDensity) {
   EXPECT_LT(std::abs(top - top0) / H, 0.01);  // physics.md §1: height within 1 %
   EXPECT_LT(d.max_density_error, 0.01);       // and density within 1 % (c0 = 10 sqrt(2 g H))
   EXPECT_LT(vmax, 1e-3);                      // at rest: far below any settling speed
+  // check's estimate of the density error (scene/sound_speed_rule.hpp): at rest it is the
+  // base's compression under the column, g H / c0^2 (the Tait law's curvature and the
+  // kernel's sampling of the deepest layer give the rest).
+  const double expected = sound_speed_report(sc).expected_density_error();
+  std::printf("expected density error %.3f %% (g H/c0^2), measured %.3f %%\n", 100 * expected,
+              100 * d.max_density_error);
+  EXPECT_NEAR(d.max_density_error / expected, 1.0, 0.1);  // measured when written: -2.8 %
 }
 
 // With each pressure coupling (interpolated; variational; variational with the
