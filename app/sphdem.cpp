@@ -15,6 +15,7 @@
 #include "propagator/simulation.hpp"
 #include "run/runner.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_limits.hpp"
 
 #ifdef SPHDEM_HAVE_CATALYST
 #include "insitu.hpp"
@@ -61,9 +62,16 @@ int main(int argc, char** argv) {
   if (*figures) return make_figures(fig_dir);
   try {
     const sphdem::Scene scene = sphdem::load_scene(case_file, overrides);
-    if (*check) {
+    if (*check) {  // every breach of the model's limits, then the derived numbers
+      const auto breaches = sphdem::scene_limit_breaches(scene);
+      for (const auto& b : breaches)
+        std::cerr << "sphdem: refused: " << case_file << ": key '" << b.key << "': " << b.message
+                  << "\n";
       std::cout << sphdem::describe_scene(scene);
-      return 0;
+      if (!breaches.empty())
+        std::cerr << fmt::format("sphdem: {} limit(s) broken: `sphdem run` refuses this scene\n",
+                                 breaches.size());
+      return breaches.empty() ? 0 : 2;
     }
     sphdem::RunOptions opt;
     opt.out_dir = out_dir;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <variant>
 
@@ -191,6 +192,22 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
     }
   }
   drag_rate_max_ = rate_max;
+}
+
+double DemSubstepper::fluid_drag_time() const {
+  const DemParticles& s = s_;
+  double t_min = std::numeric_limits<double>::infinity();
+  if (!p_.fluid_force || drag_c_.size() < s.n_owned) return t_min;
+  const long n = static_cast<long>(s.n_owned);
+  const double rho_f = p_.fluid.rho;
+#pragma omp parallel for schedule(static) reduction(min : t_min) if (n > kMinParallelSpheres)
+  for (long j = 0; j < n; ++j) {
+    const double rate = drag_c_[j] * s.eps[j] / s.mass[j];  // 1 / tau_s at its voidage and Re
+    if (!(rate > 0.0)) continue;
+    const double r = (1.0 - s.eps[j]) * s.mass[j] / (s.volume(j) * s.eps[j] * rho_f);
+    t_min = std::min(t_min, std::log1p(1.0 / r) / rate);
+  }
+  return t_min;
 }
 
 // Rigid groups share their total force equally (thesis §4.5).

@@ -42,6 +42,13 @@ class DemSubstepper {
   // The largest drag relaxation rate c eps / m over the spheres in the last force pass
   // (0 before the first, and without fluid); carried from one step to the next.
   double drag_rate_max() const { return drag_rate_max_; }
+  // The fluid side of the drag exchange is explicit: the fluid a sphere drags relaxes at
+  // r times the sphere's rate, r = (1 - eps) rho_p / (eps rho_f). A sphere relaxing toward
+  // fluid held over a step, and the fluid getting the impulse back, multiply their slip by
+  // 1 - (1 + r)(1 - exp(-dt rate)), which stays in [0, 1) (no overshoot) for
+  // dt <= ln(1 + 1/r) / rate. The smallest such dt over the spheres of the last force pass
+  // (infinity without drag): a bound on the SPH step.
+  double fluid_drag_time() const;
   int substeps() const { return substeps_; }  // per SPH step
   // Sphere halo and contact list builds so far: a list into the halo is stale once it changes.
   long list_builds() const { return list_builds_; }

@@ -436,14 +436,18 @@ void Simulation::next_dt() {
   const FluidParticles& f = fluid_;
   const FluidStepParams& p = params_.fluid;
   double dt = p.max_dt;
-  const double nu = p.kinematic_viscosity;
+  const double nu = p.kinematic_viscosity, alpha = p.momentum.alpha_artificial;
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     if (f.kind[a] != kFluid) continue;
-    dt = std::min(dt, f.dt_limit[a]);                 // CFL (3.5)
-    dt = std::min(dt, 0.125 * f.h[a] * f.h[a] / nu);  // viscous diffusion
+    dt = std::min(dt, f.dt_limit[a]);  // CFL (3.5)
+    // viscous diffusion: mu over the superficial density eps rho_f (2.55), plus the
+    // Monaghan term's own kinematic viscosity alpha h c / 10 (2.57, in 3D)
+    const double nu_a = nu / f.eps[a] + 0.1 * alpha * f.h[a] * f.cs[a];
+    dt = std::min(dt, 0.125 * f.h[a] * f.h[a] / nu_a);
     const double acc = std::sqrt(f.ax[a] * f.ax[a] + f.ay[a] * f.ay[a] + f.az[a] * f.az[a]);
     if (acc > 0) dt = std::min(dt, 0.25 * std::sqrt(f.h[a] / acc));  // force
   }
+  dt = std::min(dt, p.fluid_drag_fraction * dem_.fluid_drag_time());  // the explicit drag
   dt_sph_ = dt;
 }
 

@@ -34,6 +34,7 @@ class Simulation {
   double dt_sph() const { return dt_sph_; }
   double dt_dem() const { return dem_.dt(); }
   double dt_dem_max() const { return params_.dem.dt_max; }
+  double fluid_drag_fraction() const { return params_.fluid.fluid_drag_fraction; }
   int dem_substeps() const { return dem_.substeps(); }
   double contact_time() const { return params_.dem.contact_time; }
   const Scene& scene() const { return scene_; }

@@ -14,6 +14,7 @@
 #include "run/run_log.hpp"
 #include "run/safeguard_tally.hpp"
 #include "scene/contact_stiffness_rule.hpp"
+#include "scene/scene_limits.hpp"
 #include "scene/sound_speed_rule.hpp"
 
 namespace sphdem {
@@ -48,6 +49,7 @@ std::size_t bytes_of(V& container) {
 
 RunSummary run_scene(const Scene& scene, RunOptions opt) {
   namespace fs = std::filesystem;
+  refuse_scene_past_limits(scene);
   fs::create_directories(opt.out_dir);
   {
     std::ofstream cy(fs::path(opt.out_dir) / "case.yaml");
@@ -243,10 +245,17 @@ std::string describe_scene(const Scene& sc) {
   if (sc.contact.rolling.model == RollingParams::Model::kEpsd)
     s += fmt::format("rolling          epsd: mu_r = {}, eta_r = {}\n", sc.contact.rolling.friction,
                      sc.contact.rolling.damping_ratio);
+  const double drag_exchange = sim.fluid_drag_fraction() * sim.dem().fluid_drag_time();
   s += fmt::format(
-      "time steps       dt_SPH = {:.4g} s (CFL {}), dt_DEM = {:.4g} s, {} DEM sub-steps per SPH "
-      "step (more where the spheres' drag relaxes them faster: 0.1 m/(c eps) at run time)\n",
-      dt, sc.time.cfl, sub > 0 ? dt / sub : 0.0, sub);
+      "time steps       dt_SPH = {:.4g} s (CFL {}{}), dt_DEM = {:.4g} s, {} DEM sub-steps per "
+      "SPH step (more where the spheres' drag relaxes them faster: 0.1 m/(c eps) at run time)\n",
+      dt, sc.time.cfl,
+      drag_exchange <= dt * (1 + 1e-12)
+          ? "; bound by the fluid's drag exchange with the spheres, " +
+                fmt::format("{} ln(1 + 1/r) m/(c eps) at r = (1 - eps) rho_p / (eps rho_f)",
+                            sim.fluid_drag_fraction())
+          : "",
+      sub > 0 ? dt / sub : 0.0, sub);
   s += fmt::format(
       "run              {} relaxation steps, then t = 0 .. {} s: about {:.0f} SPH steps\n",
       sc.startup.relax_steps, sc.time.end, sc.time.end / dt);

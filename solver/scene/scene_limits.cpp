@@ -1,0 +1,107 @@
+#include "scene/scene_limits.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "coupling/drag_laws.hpp"
+#include "scene/contact_stiffness_rule.hpp"
+#include "scene/sound_speed_rule.hpp"
+
+namespace sphdem {
+
+namespace {
+constexpr double kStokesReynoldsMax = 2.0;
+constexpr double kWeaklyCompressibleLimit = 0.01;
+constexpr double kOverlapLimit = 0.1;  // of d
+
+double gravity_magnitude(const Scene& sc) {
+  return std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
+                   sc.gravity[2] * sc.gravity[2]);
+}
+}  // namespace
+
+std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
+  std::vector<LimitBreach> out;
+  const double g = gravity_magnitude(sc);
+  const FluidSpec& fl = sc.fluid;
+  for (std::size_t k = 0; k < sc.species.size(); ++k) {
+    const SpeciesSpec& sp = sc.species[k];
+    const std::string key = fmt::format("species.{}", k);
+    if (fl.enabled && sp.d_max() > fl.spacing * (1.0 + 1e-12))
+      out.push_back(
+          {"fluid.spacing",
+           fmt::format("species '{}' has spheres of d = {} m, larger than the fluid "
+                       "spacing dx = {} m: the locally averaged equations need d <= dx "
+                       "(dx/d >= 1, here {:.3g}); raise fluid.spacing to >= {} m",
+                       sp.name, sp.d_max(), fl.spacing, fl.spacing / sp.d_max(), sp.d_max())});
+    if (!fl.enabled) continue;
+    if (g > 0.0 && sp.density < fl.density)
+      out.push_back({key + ".density",
+                     fmt::format("species '{}' ({} kg/m^3) is lighter than the fluid ({} kg/m^3): "
+                                 "it would rise through the free surface, above which there is "
+                                 "no fluid; allowed: density >= fluid.density",
+                                 sp.name, sp.density, fl.density)});
+    if (std::holds_alternative<drag::Stokes>(sc.drag) && g > 0.0) {
+      const double d = sp.d_max();
+      const double v = std::abs(sp.density - fl.density) * g * d * d / (18.0 * fl.viscosity);
+      const double re = fl.density * v * d / fl.viscosity;
+      if (re > kStokesReynoldsMax)
+        out.push_back(
+            {"drag.law",
+             fmt::format("species '{}' settles at a terminal Reynolds number {:.3g} by Stokes' "
+                         "law (2.73), valid to Re = {} (Stokes' drag is then {:.0f} % below "
+                         "Schiller-Naumann's); choose a law for this Re (di_felice, "
+                         "brown_lawler)",
+                         sp.name, re, kStokesReynoldsMax,
+                         100.0 * (1.0 - 1.0 / (1.0 + 0.15 * std::pow(re, 0.687))))});
+    }
+  }
+  if (fl.enabled) {
+    const SoundSpeedReport c = sound_speed_report(sc);
+    if (c.expected_density_error() > kWeaklyCompressibleLimit)
+      out.push_back(
+          {"fluid.sound_speed",
+           fmt::format("c0 = {} m/s gives an expected density error of {:.2g} % (Mach {:.3g}, "
+                       "g H/c0^2 = {:.2g} %), past the weakly compressible limit of 1 %; raise "
+                       "fluid.sound_speed to >= {:.3g} m/s (or 0 for the automatic c0)",
+                       c.c0, 100 * c.expected_density_error(), c.mach, 100 * c.hydrostatic,
+                       c.c0 * std::sqrt(c.expected_density_error() / kWeaklyCompressibleLimit))});
+  }
+  if (!sc.species.empty() && sc.contact.normal.k > 0.0) {
+    const StiffnessChoice c = choose_contact_stiffness(sc);
+    const double impact = c.impact_overlap * std::sqrt(c.k / sc.contact.normal.k);
+    const double at_rest = c.static_overlap * c.k / sc.contact.normal.k;
+    const double worst = std::max(impact, at_rest);
+    if (worst > kOverlapLimit) {
+      // overlaps scale as k^-1/2 at impact and k^-1 at rest
+      const double k_needed =
+          sc.contact.normal.k *
+          std::max((impact / kOverlapLimit) * (impact / kOverlapLimit), at_rest / kOverlapLimit);
+      out.push_back(
+          {"contact.stiffness",
+           fmt::format("k = {} N/m lets spheres overlap by {:.2g} d ({}), past the soft-sphere "
+                       "limit of {} d; raise contact.stiffness to >= {:.2g} N/m, or auto",
+                       sc.contact.normal.k, worst, impact >= at_rest ? "at impact" : "at rest",
+                       kOverlapLimit, k_needed)});
+    }
+  }
+  return out;
+}
+
+std::string describe_breaches(const Scene& sc, const std::vector<LimitBreach>& breaches) {
+  std::string s;
+  for (const LimitBreach& b : breaches)
+    s += fmt::format("{}: key '{}': {}\n", sc.source, b.key, b.message);
+  return s;
+}
+
+void refuse_scene_past_limits(const Scene& sc) {
+  const std::vector<LimitBreach> b = scene_limit_breaches(sc);
+  if (b.empty()) return;
+  std::string s = describe_breaches(sc, b);
+  s.pop_back();
+  throw SceneError(fmt::format("the scene is past the model's limits ({}):\n{}", b.size(), s));
+}
+
+}  // namespace sphdem

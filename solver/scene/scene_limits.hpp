@@ -1,0 +1,36 @@
+#pragma once
+// The limits of the model a scene must respect, checked before it runs (`sphdem check`
+// lists every breach, `sphdem run` refuses the scene): past them the solver would run
+// and give a quiet wrong answer, so it names the limit and the key to change instead.
+//  - spheres no larger than the fluid spacing, d <= dx: the locally averaged equations
+//    (2.50-2.57) smooth each sphere over the kernel; with d > dx the voidage and the
+//    viscosity of the averaged fluid are off (validation/VALIDATION.md);
+//  - a sphere's terminal Reynolds number within its drag law's range: Stokes' law
+//    (2.73) up to Re = 2 (there Schiller-Naumann's 1 + 0.15 Re^0.687 is 1.24);
+//  - spheres no lighter than the fluid under gravity: they would rise through the
+//    free surface, above which the model has no fluid;
+//  - the sound speed's expected density error (scene/sound_speed_rule.hpp) within the
+//    weakly compressible limit, 1 %;
+//  - the spring's expected largest overlap (scene/contact_stiffness_rule.hpp) within
+//    10 % of d, past which a soft-sphere contact no longer models two touching spheres.
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace sphdem {
+
+struct LimitBreach {
+  std::string key;      // the scene key to change
+  std::string message;  // the limit, the scene's value and the allowed range
+};
+
+std::vector<LimitBreach> scene_limit_breaches(const Scene& sc);
+
+// "FILE: key 'K': message", one line per breach.
+std::string describe_breaches(const Scene& sc, const std::vector<LimitBreach>& breaches);
+
+// Thrown by `sphdem run` for a scene with breaches; what() lists every one.
+void refuse_scene_past_limits(const Scene& sc);
+
+}  // namespace sphdem

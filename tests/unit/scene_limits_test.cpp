@@ -1,0 +1,72 @@
+// The model's limits (scene/scene_limits.hpp): each breach names its key and the range;
+// the shipped cases are within all of them.
+#include "scene/scene_limits.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+using namespace sphdem;
+
+namespace {
+std::vector<LimitBreach> breaches_of(std::vector<std::string> sets) {
+  return scene_limit_breaches(load_scene(SPHDEM_CASES_DIR "/single_particle.yaml", sets));
+}
+bool names_key(const std::vector<LimitBreach>& b, const std::string& key) {
+  for (const LimitBreach& x : b)
+    if (x.key == key) return true;
+  return false;
+}
+}  // namespace
+
+TEST(SceneLimits, ShippedCasesAreWithinTheLimits) {
+  for (const auto& e : std::filesystem::directory_iterator(SPHDEM_CASES_DIR)) {
+    if (e.path().extension() != ".yaml") continue;
+    const Scene sc = load_scene(e.path().string());
+    EXPECT_TRUE(scene_limit_breaches(sc).empty())
+        << describe_breaches(sc, scene_limit_breaches(sc));
+  }
+}
+
+TEST(SceneLimits, SpheresLargerThanTheSpacingAreRefused) {
+  // dx = 200 um: d = 200 um is the edge (dx/d = 1), 210 um is past it
+  EXPECT_FALSE(names_key(breaches_of({"species.0.diameter=2.0e-4"}), "fluid.spacing"));
+  const auto b = breaches_of({"species.0.diameter=2.1e-4"});
+  ASSERT_TRUE(names_key(b, "fluid.spacing"));
+  EXPECT_NE(b[0].message.find("d <= dx"), std::string::npos) << b[0].message;
+}
+
+TEST(SceneLimits, StokesLawPastItsReynoldsNumberIsRefused) {
+  // 100 um glass: Re_t = 1.03 (the thesis case); steel (7800): Re_t = 4.4
+  EXPECT_TRUE(breaches_of({}).empty());
+  EXPECT_TRUE(names_key(breaches_of({"species.0.density=7800"}), "drag.law"));
+  EXPECT_TRUE(breaches_of({"species.0.density=7800", "drag.law=di_felice"}).empty());
+}
+
+TEST(SceneLimits, SpheresLighterThanTheFluidAreRefused) {
+  EXPECT_TRUE(names_key(breaches_of({"species.0.density=950"}), "species.0.density"));
+  EXPECT_TRUE(breaches_of({"species.0.density=1050"}).empty());
+}
+
+TEST(SceneLimits, ASoundSpeedPastTheWeaklyCompressibleLimitIsRefused) {
+  // 6 mm of water: g H / c0^2 = 1 % at c0 = 2.43 m/s
+  EXPECT_TRUE(names_key(breaches_of({"fluid.sound_speed=2.0"}), "fluid.sound_speed"));
+  EXPECT_TRUE(breaches_of({"fluid.sound_speed=2.6"}).empty());
+}
+
+TEST(SceneLimits, ASpringTooSoftForTheImpactIsRefused) {
+  const auto b = breaches_of({"contact.stiffness=1e-4"});
+  ASSERT_TRUE(names_key(b, "contact.stiffness"));
+  EXPECT_NE(b[0].message.find("at impact"), std::string::npos) << b[0].message;
+  EXPECT_TRUE(breaches_of({"contact.stiffness=10"}).empty());
+  // every breach at once, each naming its key
+  const auto all = breaches_of({"contact.stiffness=1e-4", "fluid.sound_speed=2.0"});
+  EXPECT_EQ(all.size(), 2u);
+  EXPECT_THROW(refuse_scene_past_limits(
+                   load_scene(SPHDEM_CASES_DIR "/single_particle.yaml", {"fluid.sound_speed=2"})),
+               SceneError);
+}
