@@ -22,7 +22,7 @@ struct FluidSpec {
   double spacing = 2.0e-4;        // initial lattice spacing dx (m)
   double smoothing_factor = 1.5;  // sigma in h = sigma (m/rho)^(1/3), eq. 2.65
   double fill_height = 0.0;       // free-surface height (m); 0 = the box height
-  double expected_speed = 0.0;    // u_m (m/s) for B, eq. 2.64; 0 = largest Stokes speed
+  double expected_speed = 0.0;    // u_m (m/s) for B, eq. 2.64; 0 = largest terminal speed
   double sound_speed = 0.0;       // c0 (m/s); 0 = 10 max(u_m, sqrt(2 g H)) (physics.md §1)
   double alpha_artificial =
       0.0;  // Monaghan alpha on approaching pairs only (off: it adds viscosity)

@@ -7,6 +7,7 @@
 #include "coupling/drag_laws.hpp"
 #include "scene/contact_stiffness_rule.hpp"
 #include "scene/sound_speed_rule.hpp"
+#include "sph/kernel.hpp"
 
 namespace sphdem {
 
@@ -14,6 +15,7 @@ namespace {
 constexpr double kStokesReynoldsMax = 2.0;
 constexpr double kWeaklyCompressibleLimit = 0.01;
 constexpr double kOverlapLimit = 0.1;  // of d
+constexpr double kSelfVoidageLimit = 0.025;
 
 double gravity_magnitude(const Scene& sc) {
   return std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
@@ -28,13 +30,18 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
   for (std::size_t k = 0; k < sc.species.size(); ++k) {
     const SpeciesSpec& sp = sc.species[k];
     const std::string key = fmt::format("species.{}", k);
-    if (fl.enabled && sp.d_max() > fl.spacing * (1.0 + 1e-12))
+    const double h = sc.drag_kernel_scale * fl.smoothing_factor * fl.spacing;
+    const double d = sp.d_max(), self = M_PI / 6.0 * d * d * d * kernel::w(0.0, h);
+    if (fl.enabled && self > kSelfVoidageLimit)
       out.push_back(
           {"fluid.spacing",
-           fmt::format("species '{}' has spheres of d = {} m, larger than the fluid "
-                       "spacing dx = {} m: the locally averaged equations need d <= dx "
-                       "(dx/d >= 1, here {:.3g}); raise fluid.spacing to >= {} m",
-                       sp.name, sp.d_max(), fl.spacing, fl.spacing / sp.d_max(), sp.d_max())});
+           fmt::format("species '{}': a sphere of d = {} m fills {:.3g} of its drag kernel "
+                       "(V W(0), h = {:.3g} m, d/h = {:.3g}), so its drag is that of a suspension "
+                       "at voidage {:.3g}, not of a lone sphere; allowed: V W(0) <= {} "
+                       "(d/h <= {:.3g}); raise fluid.spacing to >= {:.3g} m",
+                       sp.name, d, self, h, d / h, 1.0 - self, kSelfVoidageLimit,
+                       d / h * std::cbrt(kSelfVoidageLimit / self),
+                       fl.spacing * std::cbrt(self / kSelfVoidageLimit))});
     if (!fl.enabled) continue;
     if (g > 0.0 && sp.density < fl.density)
       out.push_back({key + ".density",
@@ -59,7 +66,7 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
   }
   if (fl.enabled) {
     const SoundSpeedReport c = sound_speed_report(sc);
-    if (c.expected_density_error() > kWeaklyCompressibleLimit)
+    if (c.expected_density_error() > kWeaklyCompressibleLimit * (1.0 + 1e-9))
       out.push_back(
           {"fluid.sound_speed",
            fmt::format("c0 = {} m/s gives an expected density error of {:.2g} % (Mach {:.3g}, "

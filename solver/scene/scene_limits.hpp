@@ -2,9 +2,10 @@
 // The limits of the model a scene must respect, checked before it runs (`sphdem check`
 // lists every breach, `sphdem run` refuses the scene): past them the solver would run
 // and give a quiet wrong answer, so it names the limit and the key to change instead.
-//  - spheres no larger than the fluid spacing, d <= dx: the locally averaged equations
-//    (2.50-2.57) smooth each sphere over the kernel; with d > dx the voidage and the
-//    viscosity of the averaged fluid are off (validation/VALIDATION.md);
+//  - a sphere small against the kernel its drag reads the voidage with: the voidage
+//    (2.50) at a sphere includes its own volume, 1 - V W(0) for a lone sphere, and the
+//    drag law's voidage function then gives it the drag of a suspension. V W(0) <= 0.025
+//    (d/h <= 0.48; a terminal slip within 5 % of the lone sphere's, VALIDATION.md);
 //  - a sphere's terminal Reynolds number within its drag law's range: Stokes' law
 //    (2.73) up to Re = 2 (there Schiller-Naumann's 1 + 0.15 Re^0.687 is 1.24);
 //  - spheres no lighter than the fluid under gravity: they would rise through the

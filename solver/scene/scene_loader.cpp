@@ -709,7 +709,11 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   if (sc.fluid.fill_height <= 0) sc.fluid.fill_height = sc.box.length(2);
   if (sc.fluid.expected_speed <= 0) {
     double u = 0.0;
-    for (const auto& s : sc.species) u = std::max(u, stokes_speed(s, sc.fluid, g));
+    for (const auto& s : sc.species) {  // the drag law's terminal speed in clear fluid
+      const double v =
+          terminal_speed(sc.drag, s.d_max(), s.density, sc.fluid.density, sc.fluid.viscosity, g);
+      u = std::max(u, std::isfinite(v) ? v : stokes_speed(s, sc.fluid, g));
+    }
     sc.fluid.expected_speed = u;
   }
   if (sc.fluid.sound_speed <= 0) {
