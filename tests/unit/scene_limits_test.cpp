@@ -32,12 +32,13 @@ TEST(SceneLimits, ShippedCasesAreWithinTheLimits) {
   }
 }
 
-TEST(SceneLimits, SpheresLargerThanTheSpacingAreRefused) {
-  // dx = 200 um: d = 200 um is the edge (dx/d = 1), 210 um is past it
-  EXPECT_FALSE(names_key(breaches_of({"species.0.diameter=2.0e-4"}), "fluid.spacing"));
-  const auto b = breaches_of({"species.0.diameter=2.1e-4"});
+TEST(SceneLimits, SpheresLargeAgainstTheirKernelAreRefused) {
+  // h = 300 um: V W(0) = 0.219 (d/h)^3 reaches 0.025 at d = 145.5 um
+  EXPECT_FALSE(names_key(breaches_of({"species.0.diameter=1.4e-4"}), "fluid.spacing"));
+  const auto b = breaches_of({"species.0.diameter=1.5e-4"});
   ASSERT_TRUE(names_key(b, "fluid.spacing"));
-  EXPECT_NE(b[0].message.find("d <= dx"), std::string::npos) << b[0].message;
+  EXPECT_NE(b[0].message.find("fills 0.0273 of its drag kernel"), std::string::npos)
+      << b[0].message;
 }
 
 TEST(SceneLimits, StokesLawPastItsReynoldsNumberIsRefused) {
