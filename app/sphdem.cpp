@@ -14,6 +14,7 @@
 #include "analysis/voidage_grid.hpp"
 #include "propagator/simulation.hpp"
 #include "run/runner.hpp"
+#include "scene/fidelity.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_limits.hpp"
 
@@ -49,10 +50,17 @@ int main(int argc, char** argv) {
   run->add_option("--set", overrides, "override a scene key, e.g. --set time.end=0.01")
       ->allow_extra_args(false);
   run->add_flag("--no-insitu", no_insitu, "skip the in-situ analysis and figures");
+  std::string fidelity;
+  const auto presets = {"fast", "balanced", "accurate"};
+  run->add_option("--fidelity", fidelity,
+                  "preset for the keys the scene leaves unset (scene key fidelity)")
+      ->check(CLI::IsMember(presets));
 
   auto* check = app.add_subcommand("check", "validate a scene and print its derived numbers");
   check->add_option("case", case_file, "scene file (YAML)")->required()->check(CLI::ExistingFile);
   check->add_option("--set", overrides, "override a scene key")->allow_extra_args(false);
+  check->add_option("--fidelity", fidelity, "preset for the keys the scene leaves unset")
+      ->check(CLI::IsMember(presets));
 
   std::string fig_dir;
   auto* figures = app.add_subcommand("figures", "(re)make the figures of a run directory");
@@ -60,6 +68,7 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   if (*figures) return make_figures(fig_dir);
+  if (!fidelity.empty()) overrides.insert(overrides.begin(), "fidelity=" + fidelity);
   try {
     const sphdem::Scene scene = sphdem::load_scene(case_file, overrides);
     if (*check) {  // every breach of the model's limits, then the derived numbers
@@ -67,7 +76,13 @@ int main(int argc, char** argv) {
       for (const auto& b : breaches)
         std::cerr << "sphdem: refused: " << case_file << ": key '" << b.key << "': " << b.message
                   << "\n";
-      std::cout << sphdem::describe_scene(scene);
+      std::vector<sphdem::Scene> presets;  // the same file at each fidelity
+      for (const auto& p : sphdem::kFidelityPresets) {
+        std::vector<std::string> sets = overrides;
+        sets.push_back(std::string("fidelity=") + p.name);
+        presets.push_back(sphdem::load_scene(case_file, sets));
+      }
+      std::cout << sphdem::describe_scene(scene, presets);
       if (!breaches.empty())
         std::cerr << fmt::format("sphdem: {} limit(s) broken: `sphdem run` refuses this scene\n",
                                  breaches.size());

@@ -163,7 +163,41 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   return r;
 }
 
-std::string describe_scene(const Scene& sc) {
+namespace {
+// Fluid particles of the lattice start and the acoustic step cfl h / c0 (3.5), for the
+// presets' estimates (the run's dt also has its viscous, force and drag bounds).
+double fluid_lattice_count(const Scene& sc) {
+  const double dx = sc.fluid.spacing;
+  return sc.fluid.enabled ? std::round(sc.box.length(0) / dx) * std::round(sc.box.length(1) / dx) *
+                                std::round(sc.fill_height() / dx)
+                          : 0.0;
+}
+double acoustic_step(const Scene& sc) {
+  return sc.time.cfl * sc.fluid.smoothing_factor * sc.fluid.spacing / sc.fluid.sound_speed;
+}
+
+std::string describe_presets(const Scene& sc, const std::vector<Scene>& presets, double wall) {
+  std::string s = fmt::format(
+      "fidelity         {} (fast | balanced | accurate; measured on reference scenes in "
+      "bench/TRADEOFF.md){}\n",
+      sc.fidelity, sc.fidelity_note.empty() ? "" : ": " + sc.fidelity_note);
+  s += "  preset     dx (m)      fluid    c0 (m/s)  CFL   DEM/t_c  max overlap  density error  "
+       "est. wall\n";
+  const double n0 = std::max(fluid_lattice_count(sc), 1.0), dt0 = acoustic_step(sc);
+  for (const Scene& p : presets) {
+    const double scale = std::max(fluid_lattice_count(p), 1.0) / n0 * dt0 / acoustic_step(p);
+    s += fmt::format("  {:<9}  {:<10.4g}  {:<7.0f}  {:<8.4g}  {:<4}  {:<7}  {:<11}  {:<13}  {}\n",
+                     p.fidelity, p.fluid.spacing, fluid_lattice_count(p), p.fluid.sound_speed,
+                     p.time.cfl, p.time.dem_steps_per_contact,
+                     fmt::format("{:.3g} d", p.contact.max_overlap),
+                     fmt::format("{:.2g} %", 100 * sound_speed_report(p).expected_density_error()),
+                     format_duration(wall * scale));
+  }
+  return s;
+}
+}  // namespace
+
+std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
   const double resident_before = peak_resident_mib();
   Simulation sim(sc);
   std::string s;
@@ -264,6 +298,16 @@ std::string describe_scene(const Scene& sc) {
   // per-thread scratch, the contact history; the process's peak resident set then is
   // what the run needs (without the in-situ analysis, which ParaView adds).
   sim.step();
+  double step_wall = HUGE_VAL;  // the quickest of three more steps: lists in place, as in a run
+  for (int k = 0; k < 3; ++k) {
+    const auto t_step = Clock::now();
+    sim.step();
+    step_wall = std::min(step_wall, since(t_step));
+  }
+  const double run_wall = step_wall * sc.time.end / std::max(sim.dt_sph(), 1e-300);
+  s += fmt::format("wall time        about {} on this machine (a step takes {:.3g} s)\n",
+                   format_duration(run_wall), step_wall);
+  if (!presets.empty()) s += describe_presets(sc, presets, run_wall);
   s += fmt::format(
       "memory           {:.0f} MiB for the scene: the growth of the peak resident set over "
       "the initial state and one step ({:.0f} -> {:.0f} MiB; particle arrays with their halo "

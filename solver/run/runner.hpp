@@ -43,7 +43,10 @@ struct RunSummary {
 RunSummary run_scene(const Scene& scene, RunOptions options);
 
 // Human-readable derived numbers of a scene (particle counts, h/d, t_c, time steps,
-// sub-steps, memory estimate). Builds the initial state to measure them.
-std::string describe_scene(const Scene& scene);
+// sub-steps, memory estimate). Builds the initial state to measure them and times a step.
+// With `presets` (the same scene file loaded at each fidelity), the presets side by side:
+// their settings, expected density error and overlap, and wall time estimated from the
+// timed step scaled by each preset's fluid particles and acoustic steps.
+std::string describe_scene(const Scene& scene, const std::vector<Scene>& presets = {});
 
 }  // namespace sphdem

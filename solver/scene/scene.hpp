@@ -17,13 +17,15 @@
 namespace sphdem {
 
 struct FluidSpec {
-  double density = 1000.0;        // rho_f (kg/m^3)
-  double viscosity = 8.9e-4;      // mu (Pa s)
-  double spacing = 2.0e-4;        // initial lattice spacing dx (m)
-  double smoothing_factor = 1.5;  // sigma in h = sigma (m/rho)^(1/3), eq. 2.65
-  double fill_height = 0.0;       // free-surface height (m); 0 = the box height
-  double expected_speed = 0.0;    // u_m (m/s) for B, eq. 2.64; 0 = largest terminal speed
-  double sound_speed = 0.0;       // c0 (m/s); 0 = 10 max(u_m, sqrt(2 g H)) (physics.md §1)
+  double density = 1000.0;           // rho_f (kg/m^3)
+  double viscosity = 8.9e-4;         // mu (Pa s)
+  double spacing = 2.0e-4;           // initial lattice spacing dx (m)
+  double smoothing_factor = 1.5;     // sigma in h = sigma (m/rho)^(1/3), eq. 2.65
+  double fill_height = 0.0;          // free-surface height (m); 0 = the box height
+  double expected_speed = 0.0;       // u_m (m/s) for B, eq. 2.64; 0 = largest terminal speed
+  double sound_speed = 0.0;          // c0 (m/s); 0 = factor max(u_m, sqrt(2 g H)) (physics.md §1)
+  double sound_speed_factor = 10.0;  // that factor (scene/fidelity.hpp)
+  double resolution = 1.0;  // layers per `spacing`: dx = spacing / resolution (resolved to 1)
   double alpha_artificial =
       0.0;  // Monaghan alpha on approaching pairs only (off: it adds viscosity)
   double density_diffusion = 0.1;  // delta of the density diffusion (sph/density_diffusion.hpp)
@@ -169,6 +171,8 @@ struct Scene {
   // The loader's record of coupling.sphere_kernel_scale: auto (scene/kernel_width_rule.hpp):
   // what it chose and why (empty when the file gave a number).
   std::string sphere_kernel_reason;
+  std::string fidelity = "balanced";  // the preset (scene/fidelity.hpp)
+  std::string fidelity_note;          // what the preset's resolution did to fluid.spacing
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;

@@ -13,8 +13,10 @@
 
 #include "coupling/hindered_settling.hpp"
 #include "scene/contact_stiffness_rule.hpp"
+#include "scene/fidelity.hpp"
 #include "scene/kernel_width_rule.hpp"
 #include "scene/scene.hpp"
+#include "sph/kernel.hpp"
 
 namespace sphdem {
 
@@ -361,15 +363,59 @@ void resolve_sphere_kernel(Scene& sc, bool kernel_auto, bool drag_kernel_given) 
                        sc.sphere_kernel_scale, reach, sc.box.length(d)));
 }
 
+// fluid.resolution (a preset's, or the scene's): dx = spacing / resolution, rounded to
+// whole layers of the periodic widths. A preset's is dropped, with a note, where the box
+// would not hold the kernel, the column fewer than 3 layers, or a sphere would fill more
+// of its kernel than scene/scene_limits.hpp allows; the scene's own fails there instead.
+void resolve_resolution(Scene& sc, bool given, const std::string& file) {
+  FluidSpec& f = sc.fluid;
+  const double old_dx = f.spacing, res = f.resolution;
+  f.resolution = 1.0;
+  if (!f.enabled) return;
+  const double dx = sc.box.length(0) / std::max(1.0, std::round(sc.box.length(0) * res / old_dx));
+  const double ny = sc.box.length(1) / dx, support = 4.8 * f.smoothing_factor * dx;
+  double d_max = 0.0;
+  for (const SpeciesSpec& s : sc.species) d_max = std::max(d_max, s.d_max());
+  const double h = f.smoothing_factor * dx;
+  std::string why;
+  if (std::abs(ny - std::round(ny)) > 1e-6)
+    why = fmt::format("{} m does not divide the width {} m", dx, sc.box.length(1));
+  else if (std::min(sc.box.length(0), sc.box.length(1)) < support)
+    why = fmt::format("the box is narrower than 4.8 smoothing_factor dx = {} m", support);
+  else if (sc.fill_height() < 3 * dx)
+    why = "the column would hold fewer than 3 layers";
+  else if (M_PI / 6.0 * d_max * d_max * d_max * kernel::w(0.0, h) > 0.025)
+    why = fmt::format("a {} m sphere would fill more than 2.5 % of its kernel", d_max);
+  if (why.empty()) {
+    f.spacing = dx;
+    sc.fidelity_note =
+        fmt::format("fluid.spacing {} m -> {:.6g} m (resolution {})", old_dx, dx, res);
+    return;
+  }
+  if (given)
+    throw SceneError(fmt::format("{}: key 'fluid.resolution': {} gives dx = {:.6g} m, but {}", file,
+                                 res, dx, why));
+  sc.fidelity_note = fmt::format("the preset's resolution {} not applied: {}", res, why);
+}
+
 Scene parse(const YAML::Node& root, const std::string& file) {
   Scene sc;
   sc.source = file;
   bool kernel_auto = true, drag_kernel_given = false, stiffness_auto = true;
   MapReader top(root, "", file);
   top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles",
-              "contact", "drag", "coupling", "time", "startup", "output", "insitu"});
+              "contact", "drag", "coupling", "time", "startup", "output", "insitu", "fidelity"});
   sc.name = top.text("name", "scene");
   sc.description = top.text("description", "");
+  // the preset's values are the defaults of the keys it names (scene/fidelity.hpp)
+  sc.fidelity = top.choice("fidelity", "balanced", {"fast", "balanced", "accurate"});
+  const FidelityPreset& preset = *find_fidelity_preset(sc.fidelity);
+  sc.fluid.resolution = preset.resolution;
+  sc.fluid.sound_speed_factor = preset.sound_speed_factor;
+  sc.time.cfl = preset.cfl;
+  sc.time.dem_steps_per_contact = preset.dem_steps_per_contact;
+  sc.contact.max_overlap = preset.max_overlap;
+  bool resolution_given = false;
 
   {
     MapReader r(top.child("domain"), "domain", file);
@@ -394,6 +440,9 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     f.fill_height = r.number("fill_height", 0.0, 0.0, sc.box.length(2));
     f.expected_speed = r.number("expected_speed", 0.0, 0.0, kInf);
     f.sound_speed = r.number("sound_speed", 0.0, 0.0, kInf);
+    f.sound_speed_factor = r.number("sound_speed_factor", f.sound_speed_factor, 5.0, 100.0);
+    resolution_given = r.has("resolution");
+    f.resolution = r.number("resolution", f.resolution, 0.25, 4.0);
     f.alpha_artificial = r.number("alpha_artificial", f.alpha_artificial, 0.0, 2.0);
     f.density_diffusion = r.number("density_diffusion", f.density_diffusion, 0.0, 1.0);
     f.gamma = r.integer("gamma", f.gamma, 1, 7);
@@ -716,9 +765,10 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     }
     sc.fluid.expected_speed = u;
   }
+  if (sc.fluid.resolution != 1.0) resolve_resolution(sc, resolution_given, file);
   if (sc.fluid.sound_speed <= 0) {
     const double um = std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.fill_height()));
-    sc.fluid.sound_speed = 10.0 * std::max(um, 1e-6);
+    sc.fluid.sound_speed = sc.fluid.sound_speed_factor * std::max(um, 1e-6);
   }
   resolve_sphere_kernel(sc, kernel_auto, drag_kernel_given);
   if (stiffness_auto) {
@@ -776,6 +826,7 @@ std::string scene_to_yaml(const Scene& sc) {
   e << YAML::BeginMap;
   e << YAML::Key << "name" << YAML::Value << sc.name;
   e << YAML::Key << "description" << YAML::Value << sc.description;
+  e << YAML::Key << "fidelity" << YAML::Value << sc.fidelity;
   e << YAML::Key << "domain" << YAML::Value << YAML::BeginMap << YAML::Key << "size" << YAML::Value;
   vec(sc.box.hi);
   e << YAML::EndMap;
@@ -789,9 +840,10 @@ std::string scene_to_yaml(const Scene& sc) {
     << YAML::Value << f.smoothing_factor;
   e << YAML::Key << "fill_height" << YAML::Value << f.fill_height << YAML::Key << "expected_speed"
     << YAML::Value << f.expected_speed;
-  e << YAML::Key << "sound_speed" << YAML::Value << f.sound_speed << YAML::Key << "alpha_artificial"
-    << YAML::Value << f.alpha_artificial << YAML::Key << "density_diffusion" << YAML::Value
-    << f.density_diffusion;
+  e << YAML::Key << "sound_speed" << YAML::Value << f.sound_speed << YAML::Key
+    << "sound_speed_factor" << YAML::Value << f.sound_speed_factor << YAML::Key << "resolution"
+    << YAML::Value << f.resolution << YAML::Key << "alpha_artificial" << YAML::Value
+    << f.alpha_artificial << YAML::Key << "density_diffusion" << YAML::Value << f.density_diffusion;
   e << YAML::Key << "gamma" << YAML::Value << f.gamma << YAML::Key << "wall_layers" << YAML::Value
     << f.wall_layers;
   e << YAML::Key << "enabled" << YAML::Value << f.enabled;

@@ -1,0 +1,33 @@
+#pragma once
+// Fidelity presets (issue 15): `fidelity: fast | balanced | accurate` in a scene (or
+// `sphdem run --fidelity ...`) gives the keys below their values where the scene leaves
+// them unset; a key the scene sets wins. balanced is the defaults. bench/TRADEOFF.md
+// measures what each costs in accuracy and in time; `sphdem check` prints the three side
+// by side for the scene at hand.
+#include <string>
+
+namespace sphdem {
+
+struct FidelityPreset {
+  const char* name;
+  double resolution;             // fluid.resolution: layers per fluid.spacing (dx = spacing / it)
+  double sound_speed_factor;     // fluid.sound_speed_factor: c0 = f max(u_m, sqrt(2 g H))
+  double cfl;                    // time.cfl (3.5)
+  double dem_steps_per_contact;  // time.dem_steps_per_contact (3.7)
+  double max_overlap;            // contact.max_overlap, for contact.stiffness: auto
+};
+
+// Expected density error 1/(2 f^2) from the column's weight: 0.9 %, 0.5 %, 0.13 %.
+inline constexpr FidelityPreset kFidelityPresets[] = {
+    {"fast", 0.8, 7.5, 0.3, 10, 0.02},
+    {"balanced", 1.0, 10.0, 0.25, 20, 0.01},
+    {"accurate", 1.25, 20.0, 0.2, 40, 0.005},
+};
+
+inline const FidelityPreset* find_fidelity_preset(const std::string& name) {
+  for (const FidelityPreset& p : kFidelityPresets)
+    if (name == p.name) return &p;
+  return nullptr;
+}
+
+}  // namespace sphdem
