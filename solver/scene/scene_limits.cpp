@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "coupling/drag_laws.hpp"
@@ -30,8 +31,15 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
   for (std::size_t k = 0; k < sc.species.size(); ++k) {
     const SpeciesSpec& sp = sc.species[k];
     const std::string key = fmt::format("species.{}", k);
-    const double h = sc.drag_kernel_scale * fl.smoothing_factor * fl.spacing;
-    const double d = sp.d_max(), self = M_PI / 6.0 * d * d * d * kernel::w(0.0, h);
+    // double smoothing (3.8-3.10) spreads a big sphere over its own kernel and then the
+    // fluid's: about one kernel of the two widths in quadrature
+    const DoubleSmoothingSpec& ds = sc.double_smoothing;
+    const bool big = ds.enabled && std::find(ds.big_species.begin(), ds.big_species.end(),
+                                             sp.name) != ds.big_species.end();
+    const double d = sp.d_max();
+    const double h = std::hypot(sc.drag_kernel_scale * fl.smoothing_factor * fl.spacing,
+                                big ? ds.h_over_d * d : 0.0);
+    const double self = M_PI / 6.0 * d * d * d * kernel::w(0.0, h);
     if (fl.enabled && self > kSelfVoidageLimit)
       out.push_back(
           {"fluid.spacing",
@@ -75,7 +83,10 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
                        c.c0, 100 * c.expected_density_error(), c.mach, 100 * c.hydrostatic,
                        c.c0 * std::sqrt(c.expected_density_error() / kWeaklyCompressibleLimit))});
   }
-  if (!sc.species.empty() && sc.contact.normal.k > 0.0) {
+  // (blocks moving rigidly, thesis 4.5, have no contacts to bound)
+  const bool all_rigid = std::all_of(sc.particles.begin(), sc.particles.end(),
+                                     [](const ParticleGroupSpec& g) { return g.rigid; });
+  if (!sc.species.empty() && sc.contact.normal.k > 0.0 && !all_rigid) {
     const StiffnessChoice c = choose_contact_stiffness(sc);
     const double impact = c.impact_overlap * std::sqrt(c.k / sc.contact.normal.k);
     const double at_rest = c.static_overlap * c.k / sc.contact.normal.k;

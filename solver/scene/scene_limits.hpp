@@ -5,7 +5,8 @@
 //  - a sphere small against the kernel its drag reads the voidage with: the voidage
 //    (2.50) at a sphere includes its own volume, 1 - V W(0) for a lone sphere, and the
 //    drag law's voidage function then gives it the drag of a suspension. V W(0) <= 0.025
-//    (d/h <= 0.48; a terminal slip within 5 % of the lone sphere's, VALIDATION.md);
+//    (d/h <= 0.48; a terminal slip within 5 % of the lone sphere's, validation/README.md;
+//    with double smoothing, a big sphere's kernel is its own and the fluid's in quadrature);
 //  - a sphere's terminal Reynolds number within its drag law's range: Stokes' law
 //    (2.73) up to Re = 2 (there Schiller-Naumann's 1 + 0.15 Re^0.687 is 1.24);
 //  - spheres no lighter than the fluid under gravity: they would rise through the
@@ -13,7 +14,8 @@
 //  - the sound speed's expected density error (scene/sound_speed_rule.hpp) within the
 //    weakly compressible limit, 1 %;
 //  - the spring's expected largest overlap (scene/contact_stiffness_rule.hpp) within
-//    10 % of d, past which a soft-sphere contact no longer models two touching spheres.
+//    10 % of d, past which a soft-sphere contact no longer models two touching spheres
+//    (not for blocks whose spheres all move rigidly).
 #include <string>
 #include <vector>
 

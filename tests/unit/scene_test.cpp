@@ -19,6 +19,7 @@
 
 #include "run/run_log.hpp"
 #include "scene/initial_state.hpp"
+#include "scene/kernel_width_rule.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphdem;
@@ -340,7 +341,7 @@ TEST(SceneDefaults, EmptyTextGivesTheDefaults) {
 
 TEST(SceneDefaults, SoundSpeedFromHydrostaticScale) {
   // 100 um glass: Stokes speed 9.2 mm/s < sqrt(2 g H) = 0.343 m/s.
-  const Scene sc = load_scene_text(kBase, kFile);
+  const Scene sc = load_scene_text(kBase, kFile, {"drag.law=stokes"});
   const double g = 9.81, H = 0.006, rho_f = 1000, mu = 8.9e-4, d = 1e-4, rho_p = 2500;
   const double u_stokes = (rho_p - rho_f) * g * d * d / (18.0 * mu);
   EXPECT_NEAR(u_stokes, 9.18e-3, 1e-5);  // the terminal speed quoted in cases/single_particle.yaml
@@ -351,10 +352,21 @@ TEST(SceneDefaults, SoundSpeedFromHydrostaticScale) {
   EXPECT_DOUBLE_EQ(sc.output.log_interval, sc.time.end / 200.0);
 }
 
+TEST(SceneDefaults, SoundSpeedFromTheDragLawsTerminalSpeed) {
+  // u_m is the drag law's terminal speed in clear fluid: 100 um glass under Di Felice's
+  // law settles at 7.6 mm/s (Re 0.86), below Stokes' 9.2 mm/s
+  const Scene sc = load_scene_text(kBase, kFile);
+  const double stokes = 1500 * 9.81 * 1e-4 * 1e-4 / (18.0 * 8.9e-4);
+  EXPECT_DOUBLE_EQ(sc.fluid.expected_speed,
+                   terminal_speed(sc.drag, 1e-4, 2500, 1000, 8.9e-4, 9.81));
+  EXPECT_NEAR(sc.fluid.expected_speed / stokes, 0.828, 0.002);
+}
+
 TEST(SceneDefaults, SoundSpeedFromLargestStokesSpeed) {
   // 1 mm spheres settle faster (0.92 m/s) than sqrt(2 g H); the largest species counts,
   // with |rho_p - rho_f| (a light species rises), |g| of a tilted gravity and the given H.
   const std::string yaml = R"(
+drag: {law: stokes}
 gravity: [3, 0, -9]
 fluid: {viscosity: 1.0e-3, fill_height: 0.005}
 species:
@@ -895,7 +907,7 @@ TEST(SceneSizeLaws, Errors) {
 TEST(SceneSizeLaws, ExpectedSpeedFromTheLargestSphere) {
   const std::string yaml =
       "species: [{name: s, density: 2500, size_distribution: {law: uniform, min: 5.0e-5, "
-      "max: 3.0e-4}}]\n";
+      "max: 3.0e-4}}]\ndrag: {law: stokes}\n";
   const Scene sc = load_scene_text(yaml, kFile);
   EXPECT_DOUBLE_EQ(sc.fluid.expected_speed, 1500 * 9.81 * 3e-4 * 3e-4 / (18 * 8.9e-4));
 }
