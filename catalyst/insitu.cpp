@@ -28,6 +28,7 @@ struct InSitu::Impl {
   Scene scene;
   InSituOptions opt;
   std::string scene_yaml;
+  std::string insitu_dir;  // DIR/insitu, where the pipelines write
   bool own_mpi = false;
   bool render = false;
   std::unique_ptr<HeadlessDisplay> display;
@@ -49,6 +50,11 @@ struct InSitu::Impl {
     num("box", {scene.box.lo[0], scene.box.hi[0], scene.box.lo[1], scene.box.hi[1], scene.box.lo[2],
                 scene.box.hi[2]});
     num("reference_velocity", {scene.insitu.reference_velocity});
+    num("snapshot_every", {static_cast<double>(opt.snapshot_every)});
+    vtkNew<vtkStringArray> dir;
+    dir->SetName("insitu_dir");
+    dir->InsertNextValue(insitu_dir);
+    fd->AddArray(dir);
     double solid = 0;  // rank-local; pipelines reduce
     for (std::size_t j = 0; j < f.spheres->n_owned; ++j) solid += f.spheres->volume(j);
     num("solid_volume", {solid});
@@ -92,10 +98,7 @@ InSitu::InSitu(const Scene& scene, const InSituOptions& opt) : impl_(std::make_u
   const std::string insitu_dir = (std::filesystem::path(opt.out_dir) / "insitu").string();
   if (rank == 0) std::filesystem::create_directories(insitu_dir);
   m.controller->Barrier();
-  setenv("SPHDEM_INSITU_DIR", insitu_dir.c_str(), 1);
-  setenv("SPHDEM_RENDER", m.render ? "1" : "0", 1);
-  setenv("SPHDEM_SNAPSHOT_EVERY", std::to_string(opt.snapshot_every).c_str(), 1);
-  setenv("SPHDEM_PIPELINES_DIR", opt.pipelines_dir.c_str(), 1);
+  m.insitu_dir = insitu_dir;  // the pipelines read it, and snapshot_every, from field data
 
   m.processor = vtkSmartPointer<vtkCPProcessor>::New();
   m.processor->Initialize();
@@ -123,7 +126,9 @@ InSitu::~InSitu() {
   }
 }
 
-bool InSitu::rendering() const { return impl_->render; }
+bool InSitu::rendering() const {
+  return impl_->render;
+}
 
 void InSitu::execute(const InSituFrame& f) {
   Impl& m = *impl_;
@@ -147,7 +152,8 @@ void InSitu::execute(const InSituFrame& f) {
   grid->SetSpacing(f.grid.spacing.data());
   vtkNew<vtkDoubleArray> eps;
   eps->SetName("voidage");
-  eps->SetArray(const_cast<double*>(f.voidage->data()), static_cast<vtkIdType>(f.voidage->size()), 1);
+  eps->SetArray(const_cast<double*>(f.voidage->data()), static_cast<vtkIdType>(f.voidage->size()),
+                1);
   grid->GetPointData()->AddArray(eps);
   grid->GetPointData()->SetActiveScalars("voidage");
   m.add_field_data(grid, f);

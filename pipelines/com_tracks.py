@@ -10,7 +10,7 @@ voidage profile cannot tell apart. All sums over MPI ranks."""
 import os
 import sys
 
-sys.path.insert(0, os.environ.get("SPHDEM_PIPELINES_DIR", "."))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # sphdem_insitu
 import numpy as np
 from paraview import catalyst
 from paraview.simple import TrivialProducer

@@ -16,7 +16,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.environ.get("SPHDEM_PIPELINES_DIR", "."))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # sphdem_insitu
 import numpy as np
 from paraview import catalyst
 from paraview.simple import TrivialProducer

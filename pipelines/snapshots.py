@@ -1,5 +1,5 @@
 # script-version: 2
-"""snapshots: off-screen PNG renders of the column every SPHDEM_SNAPSHOT_EVERY
+"""snapshots: off-screen PNG renders of the column every insitu.snapshot_every
 analyses: the spheres drawn as spheres of their own diameter, coloured by speed, a
 translucent slice of the voidage field through the middle of the column, and the time.
 DIR/insitu/snapshots/column_NNNNNN.png.
@@ -7,7 +7,7 @@ Loaded only when a display is available (sphdem starts Xvfb when DISPLAY is unse
 import os
 import sys
 
-sys.path.insert(0, os.environ.get("SPHDEM_PIPELINES_DIR", "."))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # sphdem_insitu
 from paraview import catalyst
 from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction, GetScalarBar, ResetCamera,
                              SaveScreenshot, Show, Slice, Text, TrivialProducer)
@@ -19,9 +19,6 @@ voidage = TrivialProducer(registrationName="voidage")
 options = catalyst.Options()
 options.GlobalTrigger = "TimeStep"
 
-OUT = os.path.join(si.OUT, "snapshots")
-if si.RANK == 0:
-    os.makedirs(OUT, exist_ok=True)
 
 view = CreateView("RenderView")
 view.ViewSize = [480, 640]
@@ -98,4 +95,7 @@ def catalyst_execute(info):
         view.CameraViewUp = [0.0, 0.0, 1.0]
         view.CameraParallelScale = 0.55 * H
         state["camera"] = True
-    SaveScreenshot(os.path.join(OUT, "column_%06d.png" % info.timestep), view, ImageResolution=[480, 640])
+    out = os.path.join(si.OUT, "snapshots")  # si.OUT is known once a frame was read
+    if si.RANK == 0:
+        os.makedirs(out, exist_ok=True)
+    SaveScreenshot(os.path.join(out, "column_%06d.png" % info.timestep), view, ImageResolution=[480, 640])

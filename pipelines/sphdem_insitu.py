@@ -17,9 +17,22 @@ except Exception:  # no mpi4py: a single rank
     COMM = None
 
 RANK = COMM.Get_rank() if COMM is not None else 0
-OUT = os.environ.get("SPHDEM_INSITU_DIR", ".")
-RENDER = os.environ.get("SPHDEM_RENDER", "1") == "1"
-SNAPSHOT_EVERY = int(os.environ.get("SPHDEM_SNAPSHOT_EVERY", "5"))
+# The run's options travel with every frame as field data (catalyst/insitu.cpp), read by
+# the first frame a pipeline looks at (local_data): DIR/insitu and the analyses between
+# snapshots.
+OUT = "."
+SNAPSHOT_EVERY = 5
+
+
+def _configure(data):
+    global OUT, SNAPSHOT_EVERY
+    fd = data.VTKObject.GetFieldData()
+    out = fd.GetAbstractArray("insitu_dir")
+    if out is not None and out.GetNumberOfValues():
+        OUT = out.GetValue(0)
+    every = fd.GetArray("snapshot_every")
+    if every is not None and every.GetNumberOfTuples():
+        SNAPSHOT_EVERY = max(1, int(every.GetValue(0)))
 
 
 def allreduce_sum(a):
@@ -35,7 +48,9 @@ def allreduce_sum(a):
 def local_data(producer, time):
     """The rank-local dataset of a Catalyst channel, wrapped for numpy."""
     producer.UpdatePipeline(time)
-    return dsa.WrapDataObject(producer.GetClientSideObject().GetOutputDataObject(0))
+    data = dsa.WrapDataObject(producer.GetClientSideObject().GetOutputDataObject(0))
+    _configure(data)
+    return data
 
 
 def field(data, name):
