@@ -29,9 +29,9 @@ TEST(Fidelity, BalancedIsTheDefaults) {
 
 TEST(Fidelity, PresetsSetWhatTheSceneLeavesUnset) {
   const Scene fast = sedimentation({"fidelity=fast"}), acc = sedimentation({"fidelity=accurate"});
-  // 2 mm wide at dx = 0.2 mm: fast 0.25 mm (8 layers), accurate 2 mm / 13 layers
+  // 2 mm wide at dx = 0.2 mm: fast 0.25 mm (8 layers); accurate keeps 0.2 mm
   EXPECT_DOUBLE_EQ(fast.fluid.spacing, 2.5e-4);
-  EXPECT_DOUBLE_EQ(acc.fluid.spacing, 2e-3 / 13);
+  EXPECT_DOUBLE_EQ(acc.fluid.spacing, 2e-4);
   EXPECT_EQ(fast.fluid.resolution, 1.0);  // resolved: case.yaml loads back the same scene
   const Scene again = load_scene_text(scene_to_yaml(fast), "case.yaml");
   EXPECT_EQ(again.fluid.spacing, fast.fluid.spacing);
@@ -58,15 +58,15 @@ TEST(Fidelity, KeysTheSceneSetsWin) {
 }
 
 TEST(Fidelity, AResolutionTheBoxCannotTakeIsDroppedOrRefused) {
-  // 2 mm x 1.6 mm: a spacing that divides 2 mm into 13 layers does not divide 1.6 mm
+  // 2 mm x 1.6 mm: the fast preset's 0.25 mm divides 2 mm into 8 layers, not 1.6 mm
   const std::vector<std::string> narrow = {"domain.size=[0.002, 0.0016, 0.003]",
                                            "particles.0.max=[0.002, 0.0016, 0.002]"};
   auto sets = narrow;
-  sets.push_back("fidelity=accurate");
+  sets.push_back("fidelity=fast");
   const Scene s = sedimentation(sets);
   EXPECT_DOUBLE_EQ(s.fluid.spacing, 2e-4);
   EXPECT_NE(s.fidelity_note.find("not applied"), std::string::npos) << s.fidelity_note;
-  sets.push_back("fluid.resolution=1.25");  // the scene's own: an error naming the key
+  sets.push_back("fluid.resolution=0.8");  // the scene's own: an error naming the key
   try {
     sedimentation(sets);
     FAIL() << "expected a SceneError";
