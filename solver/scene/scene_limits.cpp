@@ -16,13 +16,16 @@ namespace {
 constexpr double kStokesReynoldsMax = 2.0;
 constexpr double kWeaklyCompressibleLimit = 0.01;
 constexpr double kOverlapLimit = 0.1;  // of d
-constexpr double kSelfVoidageLimit = 0.025;
 
 double gravity_magnitude(const Scene& sc) {
   return std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
                    sc.gravity[2] * sc.gravity[2]);
 }
 }  // namespace
+
+double sphere_kernel_share(double d, double h) {
+  return M_PI / 6.0 * d * d * d * kernel::w(0.0, h);
+}
 
 std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
   std::vector<LimitBreach> out;
@@ -39,7 +42,7 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
     const double d = sp.d_max();
     const double h = std::hypot(sc.drag_kernel_scale * fl.smoothing_factor * fl.spacing,
                                 big ? ds.h_over_d * d : 0.0);
-    const double self = M_PI / 6.0 * d * d * d * kernel::w(0.0, h);
+    const double self = sphere_kernel_share(d, h);
     if (fl.enabled && self > kSelfVoidageLimit)
       out.push_back(
           {"fluid.spacing",

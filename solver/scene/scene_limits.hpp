@@ -23,6 +23,11 @@
 
 namespace sphdem {
 
+// The share of its drag kernel (of width h) a sphere of diameter d fills, V W(0), and
+// the largest a scene may have.
+inline constexpr double kSelfVoidageLimit = 0.025;
+double sphere_kernel_share(double d, double h);
+
 struct LimitBreach {
   std::string key;      // the scene key to change
   std::string message;  // the limit, the scene's value and the allowed range

@@ -16,7 +16,7 @@
 #include "scene/fidelity.hpp"
 #include "scene/kernel_width_rule.hpp"
 #include "scene/scene.hpp"
-#include "sph/kernel.hpp"
+#include "scene/scene_limits.hpp"
 
 namespace sphdem {
 
@@ -384,8 +384,9 @@ void resolve_resolution(Scene& sc, bool given, const std::string& file) {
     why = fmt::format("the box is narrower than 4.8 smoothing_factor dx = {} m", support);
   else if (sc.fill_height() < 3 * dx)
     why = "the column would hold fewer than 3 layers";
-  else if (M_PI / 6.0 * d_max * d_max * d_max * kernel::w(0.0, h) > 0.025)
-    why = fmt::format("a {} m sphere would fill more than 2.5 % of its kernel", d_max);
+  else if (sphere_kernel_share(d_max, h) > kSelfVoidageLimit)
+    why = fmt::format("a {} m sphere would fill more than {} of its kernel", d_max,
+                      kSelfVoidageLimit);
   if (why.empty()) {
     f.spacing = dx;
     sc.fidelity_note =
