@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "domain/field_info.hpp"
+
 namespace sphdem {
 
 // Below this many spheres the sphere loops run on one thread: a parallel region costs
@@ -11,7 +13,7 @@ namespace sphdem {
 constexpr long kMinParallelSpheres = 256;
 
 struct DemParticles {
-  // state that defines the run (checkpointed)
+  // Roles (carried state, scratch, halo) are in the registry at the end.
   std::vector<double> x, y, z;     // centre (m)
   std::vector<double> vx, vy, vz;  // velocity (m/s)
   std::vector<double> wx, wy, wz;  // angular velocity (rad/s); integrated only when the contact
@@ -39,55 +41,20 @@ struct DemParticles {
   std::size_t n_owned = 0;
   std::size_t size() const { return x.size(); }
 
-  // Every per-particle array with its name (output, checkpoint, resizing, reordering).
+  // The field registry: every per-particle array with its name and role
+  // (domain/field_info.hpp), for checkpoints, halos, resizing and reordering.
+  static constexpr int kFieldCount = 42;
   template <class F>
   void for_each_field(F&& f) {
-    f("species", species);
-    f("rigid_group", rigid_group);
-    f("id", id);
-    f("x", x);
-    f("y", y);
-    f("z", z);
-    f("vx", vx);
-    f("vy", vy);
-    f("vz", vz);
-    f("wx", wx);
-    f("wy", wy);
-    f("wz", wz);
-    f("radius", radius);
-    f("mass", mass);
-    f("shepard", shepard);
-    f("eps", eps);
-    f("d_sauter", d_sauter);
-    f("ufx", ufx);
-    f("ufy", ufy);
-    f("ufz", ufz);
-    f("gx", gx);
-    f("gy", gy);
-    f("gz", gz);
-    f("fx", fx);
-    f("fy", fy);
-    f("fz", fz);
-    f("fmx", fmx);
-    f("fmy", fmy);
-    f("fmz", fmz);
-    f("cx", cx);
-    f("cy", cy);
-    f("cz", cz);
-    f("tx", tx);
-    f("ty", ty);
-    f("tz", tz);
-    f("ax", ax);
-    f("ay", ay);
-    f("az", az);
-    f("x0", x0);
-    f("y0", y0);
-    f("z0", z0);
-    f("overlap_max", overlap_max);
+    visit_fields(*this, f);
+  }
+  template <class F>
+  void for_each_field(F&& f) const {
+    visit_fields(*this, f);
   }
   void resize(std::size_t n) {
     const std::size_t old = rigid_group.size();
-    for_each_field([n](const char*, auto& v) { v.resize(n); });
+    for_each_field([n](const FieldInfo&, auto& v) { v.resize(n); });
     for (std::size_t i = old; i < n; ++i)
       rigid_group[i] = -1;  // new spheres belong to no rigid group
   }
@@ -96,6 +63,61 @@ struct DemParticles {
   }
   // Moment of inertia of a solid sphere, 2/5 m r^2 (kg m^2).
   double inertia(std::size_t i) const { return 0.4 * mass[i] * radius[i] * radius[i]; }
+
+ private:
+  template <class Self, class F>
+  static void visit_fields(Self& p, F& f) {
+    constexpr unsigned kConst = kState | kConstant;
+    constexpr unsigned kMoving = kState | kHaloOnBuild;  // positions, velocities, spins
+    f(FieldInfo{"species", kConst}, p.species);
+    f(FieldInfo{"rigid_group", kConst}, p.rigid_group);
+    f(FieldInfo{"id", kConst | kHaloOnBuild}, p.id);
+    f(FieldInfo{"x", kMoving | kPosition}, p.x);
+    f(FieldInfo{"y", kMoving | kPosition}, p.y);
+    f(FieldInfo{"z", kMoving | kPosition}, p.z);
+    f(FieldInfo{"vx", kMoving}, p.vx);
+    f(FieldInfo{"vy", kMoving}, p.vy);
+    f(FieldInfo{"vz", kMoving}, p.vz);
+    f(FieldInfo{"wx", kMoving}, p.wx);
+    f(FieldInfo{"wy", kMoving}, p.wy);
+    f(FieldInfo{"wz", kMoving}, p.wz);
+    f(FieldInfo{"radius", kConst | kHaloOnBuild}, p.radius);
+    f(FieldInfo{"mass", kConst | kHaloOnBuild}, p.mass);
+    // the fluid fields at the sphere are held over the sub-steps of the next half step
+    f(FieldInfo{"shepard", kState | kHaloAfterPass}, p.shepard);
+    f(FieldInfo{"eps", kState}, p.eps);
+    f(FieldInfo{"d_sauter", kState}, p.d_sauter);
+    f(FieldInfo{"ufx", kState}, p.ufx);
+    f(FieldInfo{"ufy", kState}, p.ufy);
+    f(FieldInfo{"ufz", kState}, p.ufz);
+    f(FieldInfo{"gx", kState}, p.gx);
+    f(FieldInfo{"gy", kState}, p.gy);
+    f(FieldInfo{"gz", kState}, p.gz);
+    f(FieldInfo{"fx", kState}, p.fx);  // the trapezoid's old force
+    f(FieldInfo{"fy", kState}, p.fy);
+    f(FieldInfo{"fz", kState}, p.fz);
+    f(FieldInfo{"fmx", kState | kHaloAfterPass}, p.fmx);  // the open mean-force window
+    f(FieldInfo{"fmy", kState | kHaloAfterPass}, p.fmy);
+    f(FieldInfo{"fmz", kState | kHaloAfterPass}, p.fmz);
+    f(FieldInfo{"cx", kScratch}, p.cx);
+    f(FieldInfo{"cy", kScratch}, p.cy);
+    f(FieldInfo{"cz", kScratch}, p.cz);
+    f(FieldInfo{"tx", kState}, p.tx);  // the spin predictor's torque
+    f(FieldInfo{"ty", kState}, p.ty);
+    f(FieldInfo{"tz", kState}, p.tz);
+    f(FieldInfo{"ax", kState}, p.ax);  // the first sub-step's acceleration
+    f(FieldInfo{"ay", kState}, p.ay);
+    f(FieldInfo{"az", kState}, p.az);
+    f(FieldInfo{"x0", kScratch}, p.x0);
+    f(FieldInfo{"y0", kScratch}, p.y0);
+    f(FieldInfo{"z0", kScratch}, p.z0);
+    f(FieldInfo{"overlap_max", kScratch}, p.overlap_max);
+  }
 };
+
+// Every member is a field of the registry (a member added without an entry fails here).
+static_assert(sizeof(DemParticles) ==
+                  DemParticles::kFieldCount * sizeof(std::vector<double>) + sizeof(std::size_t),
+              "DemParticles: list every per-particle array in visit_fields");
 
 }  // namespace sphdem

@@ -5,13 +5,14 @@
 #include <vector>
 
 #include "domain/cell_list.hpp"
+#include "domain/field_info.hpp"
 
 namespace sphdem {
 
 // new index i <- old index perm[i], for every field the container lists.
 template <class Particles>
 void permute_owned(Particles& p, const std::vector<std::uint32_t>& perm) {
-  p.for_each_field([&](const char*, auto& v) {
+  p.for_each_field([&](const FieldInfo&, auto& v) {
     auto tmp = v;
     v.resize(perm.size());
     for (std::size_t i = 0; i < perm.size(); ++i) v[i] = tmp[perm[i]];

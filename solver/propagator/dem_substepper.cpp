@@ -10,6 +10,7 @@
 #include "coupling/fluid_force.hpp"
 #include "domain/reorder.hpp"
 #include "domain/row_partition.hpp"
+#include "io/particle_state.hpp"
 
 namespace sphdem {
 
@@ -48,10 +49,9 @@ void DemSubstepper::rebuild_lists() {
   halo_.build(box_, box_.halo_width(needed, wanted), s.x.data(), s.y.data(), s.z.data(), s.n_owned);
   s.resize(s.n_owned + halo_.n_ghost());
   halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
-  for (auto* v : {&s.vx, &s.vy, &s.vz, &s.radius, &s.mass}) halo_.fill(*v);
-  halo_.fill(s.id);
-  if (p_.rotation)
-    for (auto* v : {&s.wx, &s.wy, &s.wz}) halo_.fill(*v);
+  s.for_each_field([&](const FieldInfo& field, auto& v) {
+    if (field.filled_on_build()) halo_.fill(v);
+  });
   if (s.n_owned > 0) {
     cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
     contacts_.build(s, cells_, skin);
@@ -306,9 +306,58 @@ void DemSubstepper::half_step(double dt, bool first_half) {
   if (p_.rotation) correct_spin(s, h, torque_old_);
   // the halo copies as the fluid passes read them
   halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
-  for (auto* v : {&s.vx, &s.vy, &s.vz}) halo_.fill(*v);
-  if (p_.rotation)
-    for (auto* v : {&s.wx, &s.wy, &s.wz}) halo_.fill(*v);
+  s.for_each_field([&](const FieldInfo& field, auto& v) {
+    if (field.refreshed()) halo_.fill(v);
+  });
+}
+
+void DemSubstepper::write_state(CheckpointWriter& w) const {
+  write_particle_state(w, "spheres/", s_);
+  const std::vector<ContactHistory::Record> records = contact_records();
+  std::vector<std::int64_t> id(records.size()), partner(records.size());
+  std::vector<double> xi(3 * records.size()), mr(3 * records.size());
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    id[k] = records[k].id;
+    partner[k] = records[k].partner;
+    for (int d = 0; d < 3; ++d) {
+      xi[3 * k + d] = records[k].state.xi[d];
+      mr[3 * k + d] = records[k].state.mr[d];
+    }
+  }
+  w.array("contacts/id", id);
+  w.array("contacts/partner", partner);
+  w.array("contacts/xi", xi);
+  w.array("contacts/mr", mr);
+  w.scalar("dem/drag_rate_max", drag_rate_max_);
+  w.scalar("dem/reach_needed", reach_.needed);
+  w.scalar("dem/reach_wanted", reach_.wanted);
+  w.scalar("dem/reach_sphere_kernel", reach_.sphere_kernel);
+}
+
+DemParticles DemSubstepper::read_spheres(const CheckpointReader& r) {
+  return read_particle_state<DemParticles>(r, "spheres/");
+}
+
+void DemSubstepper::read_state(const CheckpointReader& r) {
+  const auto id = r.array<std::int64_t>("contacts/id");
+  const auto partner = r.array<std::int64_t>("contacts/partner");
+  const auto xi = r.array<double>("contacts/xi");
+  const auto mr = r.array<double>("contacts/mr");
+  if (partner.size() != id.size() || xi.size() != 3 * id.size() || mr.size() != 3 * id.size())
+    throw CheckpointError(r.path() + ": the contact history's arrays differ in length");
+  std::vector<ContactHistory::Record> records(id.size());
+  for (std::size_t k = 0; k < id.size(); ++k) {
+    records[k].id = id[k];
+    records[k].partner = partner[k];
+    for (int d = 0; d < 3; ++d) {
+      records[k].state.xi[d] = xi[3 * k + d];
+      records[k].state.mr[d] = mr[3 * k + d];
+    }
+  }
+  history_.set_keyed(std::move(records));
+  drag_rate_max_ = r.scalar<double>("dem/drag_rate_max");
+  reach_ = {r.scalar<double>("dem/reach_needed"), r.scalar<double>("dem/reach_wanted"),
+            r.scalar<double>("dem/reach_sphere_kernel")};
 }
 
 }  // namespace sphdem

@@ -13,6 +13,7 @@
 #include "domain/box.hpp"
 #include "domain/cell_list.hpp"
 #include "domain/periodic_halo.hpp"
+#include "io/checkpoint_file.hpp"
 #include "propagator/step_params.hpp"
 #include "sph/pair_isa.hpp"
 
@@ -74,6 +75,14 @@ class DemSubstepper {
     return axis == 0 ? g_old_x_ : axis == 1 ? g_old_y_ : g_old_z_;
   }
   void clear_mean_force();
+
+  // Checkpoints: the spheres' state fields and what the sub-steps carry from one SPH step
+  // to the next besides them (the contact history by id pairs, the drag relaxation rate
+  // that sets the next sub-step, the fluid's reach into the halo). Read back into a
+  // substepper made with the checkpoint's spheres (read_spheres).
+  void write_state(CheckpointWriter& w) const;
+  static DemParticles read_spheres(const CheckpointReader& r);
+  void read_state(const CheckpointReader& r);
 
  private:
   template <class Force>

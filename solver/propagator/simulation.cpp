@@ -11,6 +11,7 @@
 #include "coupling/reaction.hpp"
 #include "coupling/voidage.hpp"
 #include "domain/reorder.hpp"
+#include "io/particle_state.hpp"
 #include "scene/initial_state.hpp"
 #include "sph/density_rate.hpp"
 #include "sph/kernel.hpp"
@@ -38,6 +39,35 @@ Simulation::Simulation(const Scene& scene)
       params_(compile_step_params(scene_)),
       dem_(params_.box, params_.dem, placed_spheres(scene_, fluid_)) {
   build_initial_state();
+}
+
+Simulation::Simulation(const Scene& scene, const CheckpointReader& r)
+    : scene_(scene),
+      params_(compile_step_params(scene_)),
+      fluid_(read_particle_state<FluidParticles>(r, "fluid/")),
+      dem_(params_.box, params_.dem, DemSubstepper::read_spheres(r)) {
+  dem_.read_state(r);
+  time_ = r.scalar<double>("run/time");
+  dt_sph_ = r.scalar<double>("run/dt_sph");
+  steps_ = r.scalar<std::int64_t>("run/step");
+  cell_size_ = r.scalar<double>("run/cell_size");
+  sort_interval_ = static_cast<int>(r.scalar<std::int64_t>("run/sort_interval"));
+  neighbour_builds_ = r.scalar<std::int64_t>("run/neighbour_builds");
+  // The next step re-sorts and rebuilds every list (as the run that wrote it did).
+  steps_since_sort_ = sort_interval_ - 1;
+  fluid_lists_stale_ = true;
+}
+
+void Simulation::write_state(CheckpointWriter& w) const {
+  write_particle_state(w, "fluid/", fluid_);
+  dem_.write_state(w);
+  w.scalar("run/time", time_);
+  w.scalar("run/dt_sph", dt_sph_);
+  w.scalar<std::int64_t>("run/step", steps_);
+  w.scalar("run/cell_size", cell_size_);
+  w.scalar<std::int64_t>("run/sort_interval", sort_interval_);
+  w.scalar<std::int64_t>("run/neighbour_builds", neighbour_builds_);
+  w.scalar<std::int64_t>("run/rebuilds_all_next_step", rebuilds_all_next_step());
 }
 
 std::size_t Simulation::fluid_count() const {
@@ -108,10 +138,9 @@ void Simulation::rebuild_neighbours() {
                     f.n_owned);
   f.resize(f.n_owned + fluid_halo_.n_ghost());
   fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
-  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.mass, &f.h, &f.inv_h, &f.rho, &f.eps})
-    fluid_halo_.fill(*v);
-  fluid_halo_.fill(f.kind);
-  fluid_halo_.fill(f.id);
+  f.for_each_field([&](const FieldInfo& field, auto& v) {
+    if (field.filled_on_build()) fluid_halo_.fill(v);
+  });
   fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
   fluid_pairs_.build(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned, cell_size_, true,
                      /*half=*/true);
@@ -195,7 +224,9 @@ void Simulation::update_neighbours() {
     return;
   }
   fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
-  for (auto* v : {&f.vx, &f.vy, &f.vz, &f.h, &f.inv_h, &f.rho}) fluid_halo_.fill(*v);
+  f.for_each_field([&](const FieldInfo& field, auto& v) {
+    if (field.refreshed()) fluid_halo_.fill(v);
+  });
   if (params_.coupling.double_smoothing)  // its re-smoothing walks the fluid's cells (3.10)
     fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
   if (f.n_owned > 0 && !sphere_pairs_stale() && margin.sphere < 0)

@@ -11,6 +11,7 @@
 #include "domain/cell_list.hpp"
 #include "domain/neighbour_list.hpp"
 #include "domain/periodic_halo.hpp"
+#include "io/checkpoint_file.hpp"
 #include "propagator/dem_substepper.hpp"
 #include "propagator/pass_timers.hpp"
 #include "propagator/step_params.hpp"
@@ -23,6 +24,16 @@ namespace sphdem {
 class Simulation {
  public:
   explicit Simulation(const Scene& scene);
+  // A run continued from a checkpoint (scene: the checkpoint's own, see run/checkpoints.hpp).
+  Simulation(const Scene& scene, const CheckpointReader& checkpoint);
+
+  // Everything the run carries from one step to the next: the particles' state fields,
+  // the contact history, time, step and time step. Written where the next step re-sorts
+  // the particles and rebuilds every list (rebuilds_all_next_step()), the run that
+  // reads it back repeats the uninterrupted one bit for bit: from there on neither
+  // depends on lists built before.
+  void write_state(CheckpointWriter& w) const;
+  bool rebuilds_all_next_step() const { return steps_since_sort_ + 1 >= sort_interval_; }
 
   // Start-up: fluid steps with the spheres held, velocities damped (physics.md §4).
   void relax();
@@ -48,6 +59,7 @@ class Simulation {
   DemParticles& spheres() { return dem_.spheres(); }
   const DemParticles& spheres() const { return dem_.spheres(); }
   const DemSubstepper& dem() const { return dem_; }
+  const PeriodicHalo& fluid_halo() const { return fluid_halo_; }
   const PassTimers& timers() const { return timers_; }
   const ContactLaw& contact_law() const { return params_.dem.law; }
   // Tangential/rolling contact state (empty for the normal-only law), and its records

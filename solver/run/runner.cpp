@@ -42,7 +42,7 @@ double peak_resident_mib() {
 template <class V>
 std::size_t bytes_of(V& container) {
   std::size_t b = 0;
-  container.for_each_field([&](const char*, auto& v) { b += v.capacity() * sizeof(v[0]); });
+  container.for_each_field([&](const FieldInfo&, auto& v) { b += v.capacity() * sizeof(v[0]); });
   return b;
 }
 }  // namespace

@@ -135,11 +135,10 @@ P owned_part(const P& all, int rank, int nranks) {
     idx.push_back(i);
   P out;
   out.resize(idx.size());
-  P& src = const_cast<P&>(all);  // for_each_field is non-const; src is only read
-  src.for_each_field([&](const char* name, auto& v) {
-    out.for_each_field([&](const char* oname, auto& w) {
+  all.for_each_field([&](const FieldInfo& field, const auto& v) {
+    out.for_each_field([&](const FieldInfo& ofield, auto& w) {
       if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::decay_t<decltype(w)>>)
-        if (std::strcmp(name, oname) == 0)
+        if (std::strcmp(field.name, ofield.name) == 0)
           for (std::size_t k = 0; k < idx.size(); ++k) w[k] = v[idx[k]];
     });
   });
