@@ -1,10 +1,12 @@
 // sphdem: command-line front end of the solver library.
 //   sphdem run [CASE.yaml] --out DIR [--set key.path=value ...]
+//   sphdem resume DIR [--set time.end=T]
 //   sphdem check CASE.yaml [--set ...]
 //   sphdem figures DIR
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -12,11 +14,14 @@
 
 #include "analysis/contact_network.hpp"
 #include "analysis/voidage_grid.hpp"
+#include "io/checkpoint_file.hpp"
 #include "propagator/simulation.hpp"
+#include "run/checkpoints.hpp"
 #include "run/runner.hpp"
 #include "scene/fidelity.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_limits.hpp"
+#include "stop_signals.hpp"
 
 #ifdef SPHDEM_HAVE_CATALYST
 #include "insitu.hpp"
@@ -32,6 +37,107 @@ int make_figures(const std::string& dir) {
       fmt::format("/usr/bin/python3 '{}/figures.py' '{}'", SPHDEM_PIPELINES_DIR, dir);
   const int rc = std::system(cmd.c_str());
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : 1;
+}
+
+// A run with its in-situ analysis and VTK output, fresh or continued from a checkpoint;
+// the figures at the end. Returns the exit code.
+int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bool no_insitu,
+                      const sphdem::CheckpointReader* resume) {
+  sphdem::RunOptions opt;
+  opt.out_dir = out_dir;
+  opt.progress = &std::cerr;
+  opt.resume = resume;
+  opt.stop_requested = sphdem::stop_signal;
+  const double resume_time = resume ? resume->scalar<double>("run/time") : std::nan("");
+  bool insitu_ran = false;
+#ifdef SPHDEM_HAVE_CATALYST
+  std::unique_ptr<sphdem::InSitu> insitu;
+  std::unique_ptr<sphdem::VtkSnapshots> snapshots;
+  const sphdem::GridSpec grid = sphdem::column_voidage_grid(
+      scene.box.length(0), scene.box.length(1), scene.fill_height(), scene.insitu.grid_spacing,
+      scene.fluid.smoothing_factor * scene.fluid.spacing);
+  std::vector<double> voidage;
+  if (scene.insitu.enabled && !no_insitu && !scene.insitu.pipelines.empty()) {
+    sphdem::InSituOptions io;
+    io.out_dir = out_dir;
+    io.pipelines_dir = SPHDEM_PIPELINES_DIR;
+    io.pipelines = scene.insitu.pipelines;
+    io.snapshot_every = scene.insitu.snapshot_every;
+    io.resume_time = resume_time;
+    io.resume_step = resume ? static_cast<long>(resume->scalar<std::int64_t>("run/step")) : -1;
+    std::filesystem::create_directories(out_dir);
+    insitu = std::make_unique<sphdem::InSitu>(scene, io);
+    sphdem::install_stop_signals();  // ParaView's logger installed its own for SIGINT, SIGTERM
+    opt.hooks.push_back(
+        {"in-situ analysis", scene.insitu.every, [&](const sphdem::Simulation& sim, long call) {
+           voidage = voidage_on_grid(sim, grid, scene.fluid.smoothing_factor * scene.fluid.spacing);
+           const std::vector<int> contacts = contact_counts(sim.spheres(), sim.contact_list());
+           sphdem::InSituFrame fr;
+           fr.fluid = &sim.fluid();
+           fr.spheres = &sim.spheres();
+           fr.contact_count = &contacts;
+           fr.grid = grid;
+           fr.whole_extent = grid.extent;
+           fr.voidage = &voidage;
+           fr.time = sim.time();
+           fr.step = sim.step_count();
+           fr.analysis = call;
+           insitu->execute(fr);
+         }});
+    insitu_ran = true;
+  }
+  if (scene.output.vtk_every > 0) {
+    snapshots = std::make_unique<sphdem::VtkSnapshots>(
+        (std::filesystem::path(out_dir) / "vtk").string(), 0, 1);
+    if (resume) snapshots->resume(resume_time);
+    opt.hooks.push_back(
+        {"VTK snapshots", scene.output.vtk_every, [&](const sphdem::Simulation& sim, long) {
+           snapshots->write(sim.fluid(), sim.spheres(), sim.time(), sim.step_count());
+         }});
+  }
+#else
+  (void)resume_time;
+  if (scene.output.vtk_every > 0 || (scene.insitu.enabled && !no_insitu))
+    std::cerr << "sphdem: note: built without ParaView (SPHDEM_WITH_PARAVIEW=OFF): no in-situ "
+                 "analysis or VTK output\n";
+#endif
+  std::string failure;
+  sphdem::RunSummary summary;
+  try {
+    summary = sphdem::run_scene(scene, opt);
+  } catch (const sphdem::SceneError&) {
+    throw;
+  } catch (const std::exception& e) {
+    failure = e.what();  // keep what was written so far, and still make the figures
+  }
+#ifdef SPHDEM_HAVE_CATALYST
+  insitu.reset();  // finalize Catalyst: pipelines flush their reduced data
+#endif
+  if (!failure.empty()) {
+    if (insitu_ran) make_figures(out_dir);
+    std::cerr << "sphdem: run failed: " << failure << "\n";
+    const auto last = sphdem::CheckpointStore::list(out_dir);
+    if (!last.empty())
+      std::cerr << "sphdem: the last checkpoint is " << last.back()
+                << "; continue with: sphdem resume " << out_dir << "\n";
+    return 1;
+  }
+  if (summary.stopped_by) return 128 + summary.stopped_by;  // as a process ended by it
+  if (insitu_ran) make_figures(out_dir);
+  return 0;
+}
+
+// `sphdem resume DIR` may change only what does not alter the run's state.
+void check_resume_overrides(const std::vector<std::string>& overrides) {
+  for (const auto& o : overrides) {
+    const std::string key = o.substr(0, o.find('='));
+    if (key == "time.end" || key.rfind("checkpoint.", 0) == 0 || key == "output.progress_interval")
+      continue;
+    throw sphdem::SceneError(fmt::format(
+        "--set '{}': a resumed run can change only time.end, checkpoint.* and "
+        "output.progress_interval (the rest is the run's state; start a new run to change it)",
+        o));
+  }
 }
 
 }  // namespace
@@ -56,6 +162,17 @@ int main(int argc, char** argv) {
                   "preset for the keys the scene leaves unset (scene key fidelity)")
       ->check(CLI::IsMember(presets));
 
+  std::string resume_dir;
+  auto* resume = app.add_subcommand(
+      "resume", "continue the run in DIR from its newest checkpoint that reads back whole");
+  resume->add_option("dir", resume_dir, "run directory")->required()->check(CLI::ExistingDirectory);
+  resume
+      ->add_option("--set", overrides,
+                   "change time.end (to extend a finished run), checkpoint.* or "
+                   "output.progress_interval")
+      ->allow_extra_args(false);
+  resume->add_flag("--no-insitu", no_insitu, "skip the in-situ analysis and figures");
+
   auto* check = app.add_subcommand("check", "validate a scene and print its derived numbers");
   check->add_option("case", case_file, "scene file (YAML)")->required()->check(CLI::ExistingFile);
   check->add_option("--set", overrides, "override a scene key")->allow_extra_args(false);
@@ -69,7 +186,26 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (*figures) return make_figures(fig_dir);
   if (!fidelity.empty()) overrides.insert(overrides.begin(), "fidelity=" + fidelity);
+  sphdem::install_stop_signals();
   try {
+    if (*resume) {
+      check_resume_overrides(overrides);
+      sphdem::CheckpointStore::Found found = sphdem::CheckpointStore::newest_valid(resume_dir);
+      for (const auto& why : found.skipped)
+        std::cerr << "sphdem: warning: skipped a checkpoint that does not read back whole: " << why
+                  << "\n";
+      const sphdem::CheckpointReader& ckpt = *found.reader;
+      const sphdem::Scene scene =
+          sphdem::load_scene_text(ckpt.text("scene/yaml"), ckpt.path() + " (its scene)", overrides);
+      if (ckpt.scalar<double>("run/time") >= scene.time.end * (1.0 - 1e-12)) {
+        std::cerr << fmt::format(
+            "sphdem: the run in {} is complete (t = {:.6g} s = time.end); to extend it: sphdem "
+            "resume {} --set time.end=T\n",
+            resume_dir, ckpt.scalar<double>("run/time"), resume_dir);
+        return 0;
+      }
+      return run_with_analysis(scene, resume_dir, no_insitu, &ckpt);
+    }
     const sphdem::Scene scene = sphdem::load_scene(case_file, overrides);
     if (*check) {  // every breach of the model's limits, then the derived numbers
       const auto breaches = sphdem::scene_limit_breaches(scene);
@@ -88,78 +224,15 @@ int main(int argc, char** argv) {
                                  breaches.size());
       return breaches.empty() ? 0 : 2;
     }
-    sphdem::RunOptions opt;
-    opt.out_dir = out_dir;
-    opt.progress = &std::cerr;
-    bool insitu_ran = false;
-#ifdef SPHDEM_HAVE_CATALYST
-    std::unique_ptr<sphdem::InSitu> insitu;
-    std::unique_ptr<sphdem::VtkSnapshots> snapshots;
-    const sphdem::GridSpec grid = sphdem::column_voidage_grid(
-        scene.box.length(0), scene.box.length(1), scene.fill_height(), scene.insitu.grid_spacing,
-        scene.fluid.smoothing_factor * scene.fluid.spacing);
-    std::vector<double> voidage;
-    if (scene.insitu.enabled && !no_insitu && !scene.insitu.pipelines.empty()) {
-      sphdem::InSituOptions io;
-      io.out_dir = out_dir;
-      io.pipelines_dir = SPHDEM_PIPELINES_DIR;
-      io.pipelines = scene.insitu.pipelines;
-      io.snapshot_every = scene.insitu.snapshot_every;
-      std::filesystem::create_directories(out_dir);
-      insitu = std::make_unique<sphdem::InSitu>(scene, io);
-      opt.hooks.push_back(
-          {"in-situ analysis", scene.insitu.every, [&](const sphdem::Simulation& sim) {
-             voidage =
-                 voidage_on_grid(sim, grid, scene.fluid.smoothing_factor * scene.fluid.spacing);
-             const std::vector<int> contacts = contact_counts(sim.spheres(), sim.contact_list());
-             sphdem::InSituFrame fr;
-             fr.fluid = &sim.fluid();
-             fr.spheres = &sim.spheres();
-             fr.contact_count = &contacts;
-             fr.grid = grid;
-             fr.whole_extent = grid.extent;
-             fr.voidage = &voidage;
-             fr.time = sim.time();
-             fr.step = sim.step_count();
-             insitu->execute(fr);
-           }});
-      insitu_ran = true;
-    }
-    if (scene.output.vtk_every > 0) {
-      snapshots = std::make_unique<sphdem::VtkSnapshots>(
-          (std::filesystem::path(out_dir) / "vtk").string(), 0, 1);
-      opt.hooks.push_back(
-          {"VTK snapshots", scene.output.vtk_every, [&](const sphdem::Simulation& sim) {
-             snapshots->write(sim.fluid(), sim.spheres(), sim.time(), sim.step_count());
-           }});
-    }
-#else
-    if (scene.output.vtk_every > 0 || (scene.insitu.enabled && !no_insitu))
-      std::cerr << "sphdem: note: built without ParaView (SPHDEM_WITH_PARAVIEW=OFF): no in-situ "
-                   "analysis or VTK output\n";
-#endif
-    std::string failure;
-    try {
-      sphdem::run_scene(scene, opt);
-    } catch (const sphdem::SceneError&) {
-      throw;
-    } catch (const std::exception& e) {
-      failure = e.what();  // keep what was written so far, and still make the figures
-    }
-#ifdef SPHDEM_HAVE_CATALYST
-    insitu.reset();  // finalize Catalyst: pipelines flush their reduced data
-#endif
-    if (insitu_ran) make_figures(out_dir);
-    if (!failure.empty()) {
-      std::cerr << "sphdem: run failed: " << failure << "\n";
-      return 1;
-    }
+    return run_with_analysis(scene, out_dir, no_insitu, nullptr);
   } catch (const sphdem::SceneError& e) {
     std::cerr << "sphdem: error: " << e.what() << "\n";
     return 2;
+  } catch (const sphdem::CheckpointError& e) {
+    std::cerr << "sphdem: error: " << e.what() << "\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "sphdem: run failed: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

@@ -2,6 +2,7 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,11 +24,17 @@ HeadlessDisplay::HeadlessDisplay() {
   }
   pid_ = fork();
   if (pid_ == 0) {
+    // Xvfb goes with sphdem, however sphdem ends (a SIGKILL too), and holds none of its
+    // descriptors: MPI's singleton daemon waits for the end of one of them to exit.
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() == 1) _exit(127);  // the parent is already gone
     close(fds[0]);
+    for (int k = 3, n = static_cast<int>(sysconf(_SC_OPEN_MAX)); k < n && k < 65536; ++k)
+      if (k != fds[1]) close(k);
     const std::string fd = std::to_string(fds[1]);
     // Xvfb picks a free display and writes its number to fd (-displayfd).
-    execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
-           "-noreset", static_cast<char*>(nullptr));
+    execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten",
+           "tcp", "-noreset", static_cast<char*>(nullptr));
     _exit(127);
   }
   close(fds[1]);

@@ -46,6 +46,9 @@ struct InSitu::Impl {
     };
     num("time", {f.time});
     num("step", {static_cast<double>(f.step)});
+    num("analysis", {static_cast<double>(f.analysis)});
+    num("resume_time", {opt.resume_time});
+    num("resume_step", {static_cast<double>(opt.resume_step)});
     num("column_height", {scene.fill_height()});
     num("box", {scene.box.lo[0], scene.box.hi[0], scene.box.lo[1], scene.box.hi[1], scene.box.lo[2],
                 scene.box.hi[2]});

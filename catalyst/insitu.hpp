@@ -9,8 +9,9 @@
 //   "particles" vtkPolyData: spheres (velocity, diameter, density, species,
 //               fluid_force, contact_count, id)
 //   "voidage"   vtkImageData: the voidage field on a regular grid (same kernel)
-// Field data on every channel: time, step, species_names, column_height, box,
-// solid_volume, reference_velocity, scene (the resolved case.yaml text).
+// Field data on every channel: time, step, analysis, resume_time, resume_step, species_names,
+// column_height, box, solid_volume, reference_velocity, scene (the resolved case.yaml text).
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,11 +24,15 @@
 namespace sphdem {
 
 struct InSituOptions {
-  std::string out_dir = "out";          // reduced data go to out_dir/insitu
-  std::string pipelines_dir;            // where pipelines/<name>.py live
-  std::vector<std::string> pipelines;   // names (scene insitu.pipelines)
+  std::string out_dir = "out";         // reduced data go to out_dir/insitu
+  std::string pipelines_dir;           // where pipelines/<name>.py live
+  std::vector<std::string> pipelines;  // names (scene insitu.pipelines)
   int snapshot_every = 5;
-  bool want_images = true;              // render PNGs (needs X; Xvfb is started if DISPLAY is unset)
+  bool want_images = true;  // render PNGs (needs X; Xvfb is started if DISPLAY is unset)
+  // A resumed run: the time of its checkpoint. The pipelines keep their rows up to it,
+  // drop later ones and take their state back (pipelines/README.md). NaN: a new run.
+  double resume_time = std::numeric_limits<double>::quiet_NaN();
+  long resume_step = -1;
 };
 
 // The rank-local data of one analysis.
@@ -40,6 +45,7 @@ struct InSituFrame {
   const std::vector<double>* voidage = nullptr;     // values on grid, VTK order
   double time = 0;
   long step = 0;
+  long analysis = 0;  // analyses before this one, over the whole run (resumes included)
 };
 
 class InSitu {

@@ -16,6 +16,9 @@ class VtkSnapshots {
   VtkSnapshots(std::string dir, int rank, int ranks);
   ~VtkSnapshots();
   void write(const FluidParticles& fluid, const DemParticles& spheres, double time, long step);
+  // A resumed run: takes back the collections' frames up to `time` (the checkpoint's)
+  // and removes the files of later frames, so that the next write continues them.
+  void resume(double time);
 
  private:
   struct Impl;

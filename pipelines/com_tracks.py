@@ -68,10 +68,16 @@ def catalyst_execute(info):
     com_all = mz.sum() / mass.sum() if mass.sum() > 0 else float("nan")
     dz = (box[5] - box[4]) / nb
     frac = sums[3 * ns:].reshape(ns, nb) / ((box[1] - box[0]) * (box[3] - box[2]) * dz)
+    path = os.path.join(si.OUT, "com.csv")
+    if si.resumed() and "resumed" not in state:  # rows and c0 of the run before
+        state["resumed"] = True
+        state.update(si.load_state("com_tracks"))
+        if si.continue_csv(path):
+            state["header"] = True
     if "c0" not in state:
         state["c0"] = [float(np.median(frac[k][frac[k] > 0])) if np.any(frac[k] > 0) else 0.0 for k in range(ns)]
+        si.save_state("com_tracks", {"c0": state["c0"]})
     fronts = [front_height(frac[k], state["c0"][k], box[4], dz) for k in range(ns)]
-    path = os.path.join(si.OUT, "com.csv")
     new = "header" not in state
     with open(path, "w" if new else "a") as f:
         if new:

@@ -66,12 +66,18 @@ def catalyst_execute(info):
     H = float(si.field(img, "column_height")[0])
     inside = (z >= 0.0) & (z <= H)
     z, eps = z[inside], eps[inside]
+    path = os.path.join(si.OUT, "interfaces.csv")
+    if si.resumed() and "resumed" not in state:  # rows and eps_s of the run before
+        state["resumed"] = True
+        state.update(si.load_state("interfaces"))
+        if si.continue_csv(path):
+            state["header"] = True
     if "eps_s" not in state:
         occupied = eps[eps < 0.99]
         state["eps_s"] = float(np.median(occupied)) if occupied.size else math.nan
+        si.save_state("interfaces", {"eps_s": state["eps_s"]})
     eps_s = state["eps_s"]
     z_top, z_bottom = (math.nan, math.nan) if math.isnan(eps_s) else find_interfaces(z, eps, eps_s)
-    path = os.path.join(si.OUT, "interfaces.csv")
     new = not os.path.exists(path) or "header" not in state
     with open(path, "w" if new else "a") as f:
         if new:

@@ -4,6 +4,8 @@ Every reduction here is parallel-aware: each rank holds only the particles it ow
 and its piece of the voidage grid, so sums are all-reduced over MPI ranks (inside
 Catalyst, GetDataInformation()/GetRange() are rank-local). Rank 0 writes the files.
 """
+import json
+import math
 import os
 
 import numpy as np
@@ -22,10 +24,15 @@ RANK = COMM.Get_rank() if COMM is not None else 0
 # snapshots.
 OUT = "."
 SNAPSHOT_EVERY = 5
+# A resumed run (sphdem resume): the time and step of its checkpoint. Each pipeline keeps
+# its rows up to that time, drops later ones (written before the run stopped) and takes
+# back its state (load_state) at its first analysis after the resume. NaN: a new run.
+RESUME_TIME = math.nan
+RESUME_STEP = -1
 
 
 def _configure(data):
-    global OUT, SNAPSHOT_EVERY
+    global OUT, SNAPSHOT_EVERY, RESUME_TIME, RESUME_STEP
     fd = data.VTKObject.GetFieldData()
     out = fd.GetAbstractArray("insitu_dir")
     if out is not None and out.GetNumberOfValues():
@@ -33,6 +40,73 @@ def _configure(data):
     every = fd.GetArray("snapshot_every")
     if every is not None and every.GetNumberOfTuples():
         SNAPSHOT_EVERY = max(1, int(every.GetValue(0)))
+    resume = fd.GetArray("resume_time")
+    if resume is not None and resume.GetNumberOfTuples():
+        RESUME_TIME = float(resume.GetValue(0))
+    step = fd.GetArray("resume_step")
+    if step is not None and step.GetNumberOfTuples():
+        RESUME_STEP = int(step.GetValue(0))
+
+
+def resumed():
+    """True in a resumed run (the pipeline then continues its files)."""
+    return not math.isnan(RESUME_TIME)
+
+
+def before_resume(t):
+    """Whether a row of time t was written before the checkpoint the run resumed from."""
+    return t <= RESUME_TIME * (1.0 + 1e-12)
+
+
+def _state_path(name):
+    return os.path.join(OUT, "state", name + ".json")
+
+
+def save_state(name, state):
+    """A pipeline's state that a resumed run must take back (values fixed at the first
+    analysis, such as the initial suspension's voidage): DIR/insitu/state/NAME.json."""
+    os.makedirs(os.path.join(OUT, "state"), exist_ok=True)
+
+    def write(tmp):
+        with open(tmp, "w") as f:
+            json.dump(state, f)
+
+    write_atomic(_state_path(name), write)
+
+
+def load_state(name):
+    """The state save_state wrote, or {} when there is none."""
+    try:
+        with open(_state_path(name)) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return {}
+
+
+def continue_csv(path):
+    """A resumed run's CSV: the header and the rows of times up to the checkpoint are
+    kept (first column: time), later rows cut. Returns whether the file had a header."""
+    if not os.path.exists(path):
+        return False
+    with open(path) as f:
+        lines = f.readlines()
+    if not lines:
+        return False
+    kept = [lines[0]]
+    for line in lines[1:]:
+        try:
+            if not line.endswith("\n") or not before_resume(float(line.split(",", 1)[0])):
+                break
+        except ValueError:
+            break
+        kept.append(line)
+
+    def write(tmp):
+        with open(tmp, "w") as f:
+            f.writelines(kept)
+
+    write_atomic(path, write)
+    return True
 
 
 def allreduce_sum(a):

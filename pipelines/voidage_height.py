@@ -18,12 +18,31 @@ options.GlobalTrigger = "TimeStep"
 
 times, profiles = [], []
 attrs = {}
+state = {}
+
+
+def take_back_rows(path):
+    """A resumed run: the map's rows up to the checkpoint's time."""
+    import h5py
+
+    if not os.path.exists(path):
+        return
+    with h5py.File(path, "r") as h:
+        for t, row in zip(h["time"][()], h["voidage"][()]):
+            if si.before_resume(float(t)):
+                times.append(float(t))
+                profiles.append(np.asarray(row))
+        attrs.update({k: float(v) for k, v in h.attrs.items()})
 
 
 def catalyst_execute(info):
     z, eps = si.voidage_profile(voidage, info.time)
     if si.RANK != 0:
         return
+    path = os.path.join(si.OUT, "voidage_height.h5")
+    if si.resumed() and "resumed" not in state:
+        state["resumed"] = True
+        take_back_rows(path)
     if not attrs:
         img = si.local_data(voidage, info.time)
         attrs["column_height"] = float(si.field(img, "column_height")[0])
@@ -31,7 +50,6 @@ def catalyst_execute(info):
         attrs["reference_interface_velocity"] = v if v > 0 else float("nan")
     times.append(info.time)
     profiles.append(eps)
-    path = os.path.join(si.OUT, "voidage_height.h5")
 
     def write(tmp):
         import h5py

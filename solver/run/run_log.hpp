@@ -13,6 +13,10 @@ namespace sphdem {
 class RunLog {
  public:
   RunLog(const std::string& path, const std::vector<SpeciesSpec>& species);
+  // A resumed run's log: the file's header and its rows up to `step` are kept (rows
+  // written after the checkpoint are cut first), new rows follow. Throws if the file's
+  // columns are not this scene's.
+  RunLog(const std::string& path, const std::vector<SpeciesSpec>& species, long keep_through_step);
   void write(const Diagnostics& d);
   static std::vector<std::string> columns(const std::vector<SpeciesSpec>& species);
 

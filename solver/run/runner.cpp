@@ -1,21 +1,26 @@
 #include "run/runner.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 #include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 #include "analysis/diagnostics.hpp"
 #include "analysis/sediment_output.hpp"
+#include "io/checkpoint_file.hpp"
 #include "propagator/simulation.hpp"
+#include "run/checkpoints.hpp"
 #include "run/run_log.hpp"
 #include "run/safeguard_tally.hpp"
 #include "scene/contact_stiffness_rule.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/sound_speed_rule.hpp"
+#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
@@ -47,6 +52,84 @@ std::size_t bytes_of(V& container) {
 }
 }  // namespace
 
+namespace {
+
+// What the time loop carries besides the simulation: the clocks of the hooks, the log
+// and the checkpoints, and the run's running totals. Checkpointed under "runner/".
+struct LoopState {
+  std::vector<double> next_hook, last_run;  // per hook (simulated time)
+  std::vector<std::int64_t> hook_calls;
+  double next_log = 0, next_checkpoint = 0;
+  double dem_sphere_steps = 0;
+  double largest_overlap = 0, largest_density_error = 0;  // over the logged steps
+  SafeguardTally safeguards;
+
+  void write(CheckpointWriter& w, const std::vector<PeriodicHook>& hooks) const {
+    std::string names;
+    for (const auto& h : hooks) names += h.name + "\n";
+    w.text("runner/hook_names", names);
+    w.array("runner/next_hook", next_hook);
+    w.array("runner/last_run", last_run);
+    w.array("runner/hook_calls", hook_calls);
+    w.scalar("runner/next_log", next_log);
+    w.scalar("runner/next_checkpoint", next_checkpoint);
+    w.scalar("runner/dem_sphere_steps", dem_sphere_steps);
+    w.scalar("runner/largest_overlap", largest_overlap);
+    w.scalar("runner/largest_density_error", largest_density_error);
+    const SafeguardTally& t = safeguards;
+    w.array("runner/safeguard_counts",
+            std::vector<std::int64_t>{t.steps, t.floor_steps, t.clamp_steps,
+                                      static_cast<std::int64_t>(t.floor_largest),
+                                      static_cast<std::int64_t>(t.clamp_largest)});
+    w.array("runner/safeguard_particle_steps",
+            std::vector<double>{t.floor_particle_steps, t.clamp_particle_steps});
+  }
+
+  // Hooks are matched by name; one the checkpoint does not know starts at the next
+  // multiple of its interval.
+  void read(const CheckpointReader& r, const std::vector<PeriodicHook>& hooks, double time) {
+    std::vector<std::string> names;
+    const std::string joined = r.text("runner/hook_names");
+    for (std::size_t a = 0, b; (b = joined.find('\n', a)) != std::string::npos; a = b + 1)
+      names.push_back(joined.substr(a, b - a));
+    const auto nh = r.array<double>("runner/next_hook"), lr = r.array<double>("runner/last_run");
+    const auto calls = r.array<std::int64_t>("runner/hook_calls");
+    for (std::size_t k = 0; k < hooks.size(); ++k) {
+      const auto it = std::find(names.begin(), names.end(), hooks[k].name);
+      const std::size_t i = static_cast<std::size_t>(it - names.begin());
+      if (it != names.end() && i < nh.size() && i < lr.size() && i < calls.size()) {
+        next_hook[k] = nh[i];
+        last_run[k] = lr[i];
+        hook_calls[k] = calls[i];
+      } else {
+        next_hook[k] = std::ceil(time / hooks[k].interval * (1.0 - 1e-12)) * hooks[k].interval;
+      }
+    }
+    next_log = r.scalar<double>("runner/next_log");
+    next_checkpoint = r.scalar<double>("runner/next_checkpoint");
+    dem_sphere_steps = r.scalar<double>("runner/dem_sphere_steps");
+    largest_overlap = r.scalar<double>("runner/largest_overlap");
+    largest_density_error = r.scalar<double>("runner/largest_density_error");
+    const auto c = r.array<std::int64_t>("runner/safeguard_counts");
+    const auto ps = r.array<double>("runner/safeguard_particle_steps");
+    if (c.size() != 5 || ps.size() != 2)
+      throw CheckpointError(r.path() + ": runner/safeguard_* have the wrong length");
+    safeguards.steps = c[0];
+    safeguards.floor_steps = c[1];
+    safeguards.clamp_steps = c[2];
+    safeguards.floor_largest = static_cast<std::size_t>(c[3]);
+    safeguards.clamp_largest = static_cast<std::size_t>(c[4]);
+    safeguards.floor_particle_steps = ps[0];
+    safeguards.clamp_particle_steps = ps[1];
+  }
+};
+
+const char* isa_name(PairIsa isa) {
+  return isa == PairIsa::kAvx512 ? "x86-64-v4" : isa == PairIsa::kAvx2 ? "x86-64-v3" : "x86-64";
+}
+
+}  // namespace
+
 RunSummary run_scene(const Scene& scene, RunOptions opt) {
   namespace fs = std::filesystem;
   refuse_scene_past_limits(scene);
@@ -57,58 +140,111 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   }
   std::ostream* out = opt.progress;
   const auto t_start = Clock::now();
-  Simulation sim(scene);
-  if (out)
+  const CheckpointReader* resume = opt.resume;
+  const int threads = omp_get_max_threads();
+  if (resume) {
+    const long was = static_cast<long>(resume->scalar<std::int64_t>("meta/threads"));
+    const std::string isa = resume->text("meta/pair_isa");
+    if (out)
+      *out << fmt::format("sphdem: resuming from {} (t = {:.6g} s, step {})\n", resume->path(),
+                          resume->scalar<double>("run/time"),
+                          resume->scalar<std::int64_t>("run/step"));
+    if (out && (was != threads || isa != isa_name(best_pair_isa())))
+      *out << fmt::format(
+          "sphdem: note: the checkpoint was written on {} thread(s) with {} lanes, this run "
+          "has {} with {}: it continues the run exactly only on the same\n",
+          was, isa, threads, isa_name(best_pair_isa()));
+  }
+  std::unique_ptr<Simulation> simulation =
+      resume ? std::make_unique<Simulation>(scene, *resume) : std::make_unique<Simulation>(scene);
+  Simulation& sim = *simulation;
+  if (out && !resume)
     *out << fmt::format("sphdem: {} fluid + {} wall SPH particles, {} spheres; relaxing {} steps\n",
                         sim.fluid_count(), sim.wall_count(), sim.spheres().n_owned,
                         scene.startup.relax_steps)
          << std::flush;
-  sim.relax();
-  RunLog log((fs::path(opt.out_dir) / "log.csv").string(), scene.species);
-  log.write(diagnostics(sim));
-  std::vector<double> next_hook(opt.hooks.size(), 0.0), last_run(opt.hooks.size(), -1.0);
+  if (!resume) sim.relax();
+  const std::string log_path = (fs::path(opt.out_dir) / "log.csv").string();
+  std::unique_ptr<RunLog> log =
+      resume ? std::make_unique<RunLog>(log_path, scene.species, sim.step_count())
+             : std::make_unique<RunLog>(log_path, scene.species);
+
+  LoopState st;
+  st.next_hook.assign(opt.hooks.size(), 0.0);
+  st.last_run.assign(opt.hooks.size(), -1.0);
+  st.hook_calls.assign(opt.hooks.size(), 0);
+  st.next_log = scene.output.log_interval;
+  const CheckpointSpec& cs = scene.checkpoint;
+  st.next_checkpoint = cs.every > 0 ? cs.every : HUGE_VAL;
+  if (resume) {
+    st.read(*resume, opt.hooks, sim.time());
+    if (cs.every > 0 && !(st.next_checkpoint < HUGE_VAL))  // every set on resume
+      st.next_checkpoint = std::ceil(sim.time() / cs.every * (1.0 + 1e-12)) * cs.every;
+    if (cs.every <= 0) st.next_checkpoint = HUGE_VAL;
+  }
   auto run_hooks = [&](bool last) {  // each hook at t = 0, every interval, and at the end
     for (std::size_t k = 0; k < opt.hooks.size(); ++k) {
       PeriodicHook& hk = opt.hooks[k];
-      const bool due = sim.time() >= next_hook[k] * (1.0 - 1e-9);
-      if (!due && !(last && last_run[k] != sim.time())) continue;
-      last_run[k] = sim.time();
+      const bool due = sim.time() >= st.next_hook[k] * (1.0 - 1e-9);
+      if (!due && !(last && st.last_run[k] != sim.time())) continue;
+      st.last_run[k] = sim.time();
       const auto t0 = Clock::now();
-      hk.action(sim);
+      hk.action(sim, st.hook_calls[k]++);
       hk.seconds += since(t0);
-      while (next_hook[k] <= sim.time() * (1.0 + 1e-9)) next_hook[k] += hk.interval;
+      while (st.next_hook[k] <= sim.time() * (1.0 + 1e-9)) st.next_hook[k] += hk.interval;
     }
   };
-  run_hooks(false);
-  double step_seconds = 0;
+  if (!resume) {
+    log->write(diagnostics(sim));
+    run_hooks(false);
+  }
 
-  const auto t_loop = Clock::now();
-  auto t_progress = t_loop;
-  double next_log = scene.output.log_interval;
-  double dem_sphere_steps = 0;
-  const double end = scene.time.end;
   RunSummary r;
-  double largest_overlap = 0, largest_density_error = 0;  // over the logged steps
+  CheckpointStore store(opt.out_dir, cs.keep);
+  auto write_checkpoint = [&] {
+    const auto t0 = Clock::now();
+    r.checkpoint = store.write(sim.step_count(), [&](CheckpointWriter& w) {
+      sim.write_state(w);
+      st.write(w, opt.hooks);
+      w.text("scene/yaml", scene_to_yaml(scene));
+      // the ranks' slices of the particle datasets (one rank today)
+      w.array("ranks/fluid_count",
+              std::vector<std::int64_t>{static_cast<std::int64_t>(sim.fluid().n_owned)});
+      w.array("ranks/sphere_count",
+              std::vector<std::int64_t>{static_cast<std::int64_t>(sim.spheres().n_owned)});
+      w.scalar<std::int64_t>("meta/threads", threads);
+      w.text("meta/pair_isa", isa_name(best_pair_isa()));
+    });
+    ++r.checkpoints_written;
+    r.checkpoint_seconds += since(t0);
+  };
+
+  double step_seconds = 0;
+  const auto t_loop = Clock::now();
+  auto t_progress = t_loop, t_checkpoint = t_loop;
+  const long first_step = sim.step_count();
+  const double end = scene.time.end;
+  bool checkpoint_due = false;
   while (sim.time() < end * (1.0 - 1e-12)) {
     const auto t_step = Clock::now();
     sim.step();
     step_seconds += since(t_step);
-    r.safeguards.add(sim.voidage_clamped(), sim.omega_bounded());
-    dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
+    st.safeguards.add(sim.voidage_clamped(), sim.omega_bounded());
+    st.dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
     const bool last = sim.time() >= end * (1.0 - 1e-12);
-    if (sim.time() >= next_log * (1.0 - 1e-9) || last) {
+    if (sim.time() >= st.next_log * (1.0 - 1e-9) || last) {
       const Diagnostics d = diagnostics(sim);
-      largest_overlap = std::max(largest_overlap, d.max_overlap_over_d);
-      largest_density_error = std::max(largest_density_error, d.max_density_error);
-      log.write(d);
-      while (next_log <= sim.time() * (1.0 + 1e-9)) next_log += scene.output.log_interval;
+      st.largest_overlap = std::max(st.largest_overlap, d.max_overlap_over_d);
+      st.largest_density_error = std::max(st.largest_density_error, d.max_density_error);
+      log->write(d);
+      while (st.next_log <= sim.time() * (1.0 + 1e-9)) st.next_log += scene.output.log_interval;
     }
     run_hooks(last);
     if (out && since(t_progress) >= scene.output.progress_interval) {
       t_progress = Clock::now();
       const double wall = since(t_loop);
-      const double rate = sim.step_count() / wall;
-      const double eta = wall * (end - sim.time()) / std::max(sim.time(), 1e-30);
+      const double rate = (sim.step_count() - first_step) / wall;
+      const double eta = rate > 0 ? (end - sim.time()) / sim.dt_sph() / rate : HUGE_VAL;
       *out << fmt::format(
                   "  t = {:.4e} / {:.4e} s ({:4.1f} %)  step {}  {:.1f} steps/s  dt = {:.3e} s  "
                   "ETA {}\n",
@@ -116,47 +252,81 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
                   format_duration(eta))
            << std::flush;
     }
+    // Checkpoints fall due by simulated time, by wall time or by a stop request, and are
+    // written at the first step after which the next one rebuilds every list.
+    if (sim.time() >= st.next_checkpoint * (1.0 - 1e-9)) {
+      checkpoint_due = true;
+      while (st.next_checkpoint <= sim.time() * (1.0 + 1e-9)) st.next_checkpoint += cs.every;
+    }
+    if (cs.wall_interval > 0 && since(t_checkpoint) >= cs.wall_interval) checkpoint_due = true;
+    const int stop = opt.stop_requested ? opt.stop_requested() : 0;
+    if (stop && !r.stopped_by) {
+      r.stopped_by = stop;
+      checkpoint_due = true;
+      if (out)
+        *out << fmt::format("sphdem: stop requested (signal {}): writing a checkpoint{}\n", stop,
+                            sim.rebuilds_all_next_step() ? "" : " at the next rebuild of the lists")
+             << std::flush;
+    }
+    if (checkpoint_due && !last && sim.rebuilds_all_next_step()) {
+      write_checkpoint();
+      checkpoint_due = false;
+      t_checkpoint = Clock::now();
+      if (r.stopped_by) break;
+    }
   }
-  write_sediment_output(sim, opt.out_dir);
+  const bool finished = sim.time() >= end * (1.0 - 1e-12);
+  if (finished && (cs.at_end || checkpoint_due)) write_checkpoint();
+  if (finished) write_sediment_output(sim, opt.out_dir);
+  r.safeguards = st.safeguards;
   r.steps = sim.step_count();
   r.step_seconds = step_seconds;
   r.hooks = opt.hooks;
   r.simulated_time = sim.time();
   r.wall_seconds = since(t_start);
   const double loop = since(t_loop);
-  r.fluid_particle_steps_per_second = static_cast<double>(sim.fluid().n_owned) * r.steps / loop;
-  r.sphere_particle_steps_per_second = dem_sphere_steps / loop;
-  if (out) {
-    const auto& t = sim.timers().seconds;
-    double total = 0;
-    for (double x : t) total += x;
-    std::string parts;
-    for (int k = 0; k < PassTimers::kCount; ++k)
-      parts +=
-          fmt::format(" {} {:.0f}%", PassTimers::kNames[k], 100.0 * t[k] / std::max(total, 1e-30));
-    *out << "sphdem: time per pass:" << parts << "\n";
-    for (const auto& hk : opt.hooks)
-      *out << fmt::format("sphdem: {}: {:.2f} s, {:.1f} % of the step time\n", hk.name, hk.seconds,
-                          100.0 * hk.seconds / std::max(step_seconds, 1e-30));
-  }
-  if (out) *out << "sphdem: " << r.safeguards.describe(sim.fluid().n_owned) << "\n";
-  r.largest_overlap = largest_overlap;
-  r.largest_density_error = largest_density_error;
-  if (out && sim.fluid().n_owned > 0)
+  const double steps_here = static_cast<double>(sim.step_count() - first_step);
+  r.fluid_particle_steps_per_second = static_cast<double>(sim.fluid().n_owned) * steps_here / loop;
+  r.sphere_particle_steps_per_second = st.dem_sphere_steps / loop;
+  r.largest_overlap = st.largest_overlap;
+  r.largest_density_error = st.largest_density_error;
+  if (!out) return r;
+  const auto& t = sim.timers().seconds;
+  double total = 0;
+  for (double x : t) total += x;
+  std::string parts;
+  for (int k = 0; k < PassTimers::kCount; ++k)
+    parts +=
+        fmt::format(" {} {:.0f}%", PassTimers::kNames[k], 100.0 * t[k] / std::max(total, 1e-30));
+  *out << "sphdem: time per pass:" << parts << "\n";
+  for (const auto& hk : opt.hooks)
+    *out << fmt::format("sphdem: {}: {:.2f} s, {:.1f} % of the step time\n", hk.name, hk.seconds,
+                        100.0 * hk.seconds / std::max(step_seconds, 1e-30));
+  if (r.checkpoints_written > 0)
+    *out << fmt::format("sphdem: {} checkpoint(s), {:.2f} s, {:.2f} % of the step time; last {}\n",
+                        r.checkpoints_written, r.checkpoint_seconds,
+                        100.0 * r.checkpoint_seconds / std::max(step_seconds, 1e-30), r.checkpoint);
+  *out << "sphdem: " << r.safeguards.describe(sim.fluid().n_owned) << "\n";
+  if (sim.fluid().n_owned > 0)
     *out << fmt::format(
         "sphdem: largest density error over the logged steps {:.2g} % (expected {:.2g} % from c0; "
         "limit 1 %{})\n",
-        100 * largest_density_error, 100 * sound_speed_report(scene).expected_density_error(),
-        largest_density_error > 0.01 ? ": raise fluid.sound_speed" : "");
-  if (out && sim.spheres().n_owned > 0)
+        100 * r.largest_density_error, 100 * sound_speed_report(scene).expected_density_error(),
+        r.largest_density_error > 0.01 ? ": raise fluid.sound_speed" : "");
+  if (sim.spheres().n_owned > 0)
     *out << fmt::format("sphdem: largest overlap over the logged steps {:.3g} d{}\n",
-                        largest_overlap,
-                        largest_overlap > scene.contact.max_overlap
+                        r.largest_overlap,
+                        r.largest_overlap > scene.contact.max_overlap
                             ? fmt::format(" -- above contact.max_overlap = {}: a stiffer spring "
                                           "(contact.stiffness) or a slower impact",
                                           scene.contact.max_overlap)
                             : fmt::format(" (contact.max_overlap {})", scene.contact.max_overlap));
-  if (out)
+  if (r.stopped_by)
+    *out << fmt::format(
+        "sphdem: stopped at t = {:.6g} s (step {}); checkpoint {}. Continue with: sphdem resume "
+        "{}\n",
+        r.simulated_time, r.steps, r.checkpoint.empty() ? "none" : r.checkpoint, opt.out_dir);
+  else
     *out << fmt::format(
         "sphdem: done, {} steps to t = {:.4e} s in {} ({:.3g} SPH particle-steps/s)\n", r.steps,
         r.simulated_time, format_duration(r.wall_seconds), r.fluid_particle_steps_per_second);

@@ -13,11 +13,14 @@ namespace sphdem {
 
 class Simulation;
 
-// Something to do every `interval` of simulated time (from t = 0, release).
+class CheckpointReader;
+
+// Something to do every `interval` of simulated time (from t = 0, release). `call` counts
+// its calls from 0 over the whole run, across resumes.
 struct PeriodicHook {
   std::string name;
   double interval = 0;
-  std::function<void(const Simulation&)> action;
+  std::function<void(const Simulation&, long call)> action;
   double seconds = 0;  // wall time spent in it (filled by run_scene)
 };
 
@@ -25,6 +28,13 @@ struct RunOptions {
   std::string out_dir = "out";
   std::ostream* progress = nullptr;  // terminal progress lines (nullptr: silent)
   std::vector<PeriodicHook> hooks;   // in-situ analysis, snapshots
+  // Continue the run of out_dir from this checkpoint (`sphdem resume`): no start-up;
+  // log.csv keeps its rows up to the checkpoint; hooks, log and checkpoint clocks go on
+  // where they were.
+  const CheckpointReader* resume = nullptr;
+  // Polled after every step: non-zero (the number of a signal) asks the run to stop at
+  // its next checkpoint, written within scene sort_interval steps (run_scene returns).
+  std::function<int()> stop_requested;
 };
 
 struct RunSummary {
@@ -38,8 +48,14 @@ struct RunSummary {
   SafeguardTally safeguards;                    // every step's floor and clamp counts
   double largest_overlap = 0;                   // / d, over the logged steps
   double largest_density_error = 0;             // |rho/rho0 - 1|, over the logged steps
+  int stopped_by = 0;                           // the stop request that ended the run (0: none)
+  std::string checkpoint;                       // the last checkpoint written ("" if none)
+  int checkpoints_written = 0;
+  double checkpoint_seconds = 0;  // wall time spent writing them
 };
 
+// Runs a scene, or continues it from options.resume. Throws CheckpointError when a
+// checkpoint cannot be written (the previous one stays whole).
 RunSummary run_scene(const Scene& scene, RunOptions options);
 
 // Human-readable derived numbers of a scene (particle counts, h/d, t_c, time steps,

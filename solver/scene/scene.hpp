@@ -95,6 +95,16 @@ struct OutputSpec {
   double vtk_every = 0.0;          // (s) between full .vtp snapshots + .pvd; 0 = none
 };
 
+// Checkpoints (run/checkpoints.hpp): DIR/checkpoints/ckpt_<step>.h5, the newest `keep`
+// kept. One is due every `every` of simulated time and every `wall_interval` of wall
+// time (0: not by that clock), at SIGINT/SIGTERM, and at the end of the run.
+struct CheckpointSpec {
+  double every = 0.0;             // (s) simulated time
+  double wall_interval = 1800.0;  // (s) wall-clock time
+  int keep = 2;
+  bool at_end = true;
+};
+
 // In-situ analysis through Catalyst (catalyst/, pipelines/).
 struct InSituSpec {
   double every = 0.0;  // (s) between analyses; 0 = end / 50
@@ -176,6 +186,7 @@ struct Scene {
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;
+  CheckpointSpec checkpoint;
   InSituSpec insitu;
 
   double fill_height() const { return fluid.fill_height > 0 ? fluid.fill_height : box.length(2); }

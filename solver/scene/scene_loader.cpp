@@ -405,7 +405,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   bool kernel_auto = true, drag_kernel_given = false, stiffness_auto = true;
   MapReader top(root, "", file);
   top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles",
-              "contact", "drag", "coupling", "time", "startup", "output", "insitu", "fidelity"});
+              "contact", "drag", "coupling", "time", "startup", "output", "checkpoint", "insitu",
+              "fidelity"});
   sc.name = top.text("name", "scene");
   sc.description = top.text("description", "");
   // the preset's values are the defaults of the keys it names (scene/fidelity.hpp)
@@ -728,6 +729,15 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     r.finish();
   }
   {
+    MapReader r(top.child("checkpoint"), "checkpoint", file);
+    CheckpointSpec& c = sc.checkpoint;
+    c.every = r.number("every", c.every, 0.0, kInf);
+    c.wall_interval = r.number("wall_interval", c.wall_interval, 0.0, kInf);
+    c.keep = r.integer("keep", c.keep, 1, 1000);
+    c.at_end = r.boolean("at_end", c.at_end);
+    r.finish();
+  }
+  {
     MapReader r(top.child("insitu"), "insitu", file);
     InSituSpec& in = sc.insitu;
     in.enabled = r.boolean("enabled", in.enabled);
@@ -972,6 +982,11 @@ std::string scene_to_yaml(const Scene& sc) {
     << YAML::Value << sc.output.log_interval << YAML::Key << "progress_interval" << YAML::Value
     << sc.output.progress_interval << YAML::Key << "vtk" << YAML::Value << YAML::BeginMap
     << YAML::Key << "every" << YAML::Value << sc.output.vtk_every << YAML::EndMap << YAML::EndMap;
+  const CheckpointSpec& c = sc.checkpoint;
+  e << YAML::Key << "checkpoint" << YAML::Value << YAML::BeginMap << YAML::Key << "every"
+    << YAML::Value << c.every << YAML::Key << "wall_interval" << YAML::Value << c.wall_interval
+    << YAML::Key << "keep" << YAML::Value << c.keep << YAML::Key << "at_end" << YAML::Value
+    << c.at_end << YAML::EndMap;
   const InSituSpec& in = sc.insitu;
   e << YAML::Key << "insitu" << YAML::Value << YAML::BeginMap << YAML::Key << "enabled"
     << YAML::Value << in.enabled << YAML::Key << "every" << YAML::Value << in.every << YAML::Key
