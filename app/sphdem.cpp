@@ -131,11 +131,13 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
 void check_resume_overrides(const std::vector<std::string>& overrides) {
   for (const auto& o : overrides) {
     const std::string key = o.substr(0, o.find('='));
-    if (key == "time.end" || key.rfind("checkpoint.", 0) == 0 || key == "output.progress_interval")
+    if (key.rfind("time.", 0) == 0 || key.rfind("checkpoint.", 0) == 0 ||
+        key.rfind("watchdog.", 0) == 0 || key == "output.progress_interval")
       continue;
     throw sphdem::SceneError(fmt::format(
-        "--set '{}': a resumed run can change only time.end, checkpoint.* and "
-        "output.progress_interval (the rest is the run's state; start a new run to change it)",
+        "--set '{}': a resumed run can change only time.* (end, cfl, dem_steps_per_contact, "
+        "max_dt_sph), checkpoint.*, watchdog.* and output.progress_interval (the rest is the "
+        "run's state; start a new run to change it)",
         o));
   }
 }
@@ -168,8 +170,9 @@ int main(int argc, char** argv) {
   resume->add_option("dir", resume_dir, "run directory")->required()->check(CLI::ExistingDirectory);
   resume
       ->add_option("--set", overrides,
-                   "change time.end (to extend a finished run), checkpoint.* or "
-                   "output.progress_interval")
+                   "change time.* (time.end extends a finished run; time.cfl, "
+                   "time.dem_steps_per_contact after a watchdog stop), checkpoint.*, "
+                   "watchdog.* or output.progress_interval")
       ->allow_extra_args(false);
   resume->add_flag("--no-insitu", no_insitu, "skip the in-situ analysis and figures");
 

@@ -118,6 +118,10 @@ std::string hdf5_reason() {
   return reason.empty() ? "HDF5 error" : reason;
 }
 
+std::string fmt_error(const char* what, const std::string& path, int err) {
+  return std::string(what) + " " + path + ": " + std::strerror(err);
+}
+
 // HDF5 reports through our exceptions, not by printing its error stack.
 void quiet_hdf5() {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
@@ -125,9 +129,19 @@ void quiet_hdf5() {
 
 }  // namespace
 
+// The file is built in memory (HDF5's core driver, no backing store) and written to the
+// disk by finish() with plain write() and fsync(): a full disk or a file-size limit is
+// then one clear error of ours, and HDF5 is never left holding a file it cannot flush
+// (HDF5 1.10 crashes at exit flushing such a file again).
 CheckpointWriter::CheckpointWriter(std::string path) : path_(std::move(path)) {
   quiet_hdf5();
-  file_ = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  const int probe = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (probe < 0) throw CheckpointError("cannot create " + path_ + ": " + std::strerror(errno));
+  ::close(probe);
+  const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+  H5Pset_fapl_core(fapl, 64 << 20, /*backing_store=*/0);
+  file_ = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  H5Pclose(fapl);
   if (file_ < 0) throw CheckpointError("cannot create " + path_ + ": " + hdf5_reason());
 }
 
@@ -175,19 +189,38 @@ void CheckpointWriter::finish() {
   H5Tclose(str);
   H5Sclose(scalar);
   if (status >= 0) status = H5Fflush(file_, H5F_SCOPE_GLOBAL);
-  const std::string reason = status < 0 ? hdf5_reason() : "";
-  const herr_t closed = H5Fclose(file_);
-  file_ = -1;
-  if (status < 0 || closed < 0)
-    throw CheckpointError("cannot write " + path_ + ": " + (status < 0 ? reason : hdf5_reason()));
-  // On the disk before the rename that commits it.
-  const int fd = ::open(path_.c_str(), O_RDONLY);
-  if (fd < 0 || ::fsync(fd) != 0) {
-    const int err = errno;
-    if (fd >= 0) ::close(fd);
-    throw CheckpointError("cannot flush " + path_ + " to the disk: " + std::strerror(err));
+  std::vector<unsigned char> image;
+  if (status >= 0) {
+    const ssize_t size = H5Fget_file_image(file_, nullptr, 0);
+    if (size > 0) {
+      image.resize(static_cast<std::size_t>(size));
+      status = H5Fget_file_image(file_, image.data(), image.size()) == size ? 0 : -1;
+    } else {
+      status = -1;
+    }
   }
-  ::close(fd);
+  const std::string reason = status < 0 ? hdf5_reason() : "";
+  H5Fclose(file_);  // in memory: nothing to flush
+  file_ = -1;
+  if (status < 0) throw CheckpointError("cannot build " + path_ + " in memory: " + reason);
+  // to the disk, then on the disk before the rename that commits it
+  const int fd = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) throw CheckpointError("cannot write " + path_ + ": " + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < image.size()) {
+    const ssize_t n = ::write(fd, image.data() + done, image.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      throw CheckpointError(fmt_error("cannot write", path_, err) + " after " +
+                            std::to_string(done) + " of " + std::to_string(image.size()) +
+                            " bytes");
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0)
+    throw CheckpointError(fmt_error("cannot flush to the disk", path_, errno));
 }
 
 CheckpointReader::CheckpointReader(const std::string& path) : path_(path) {

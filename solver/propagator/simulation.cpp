@@ -454,7 +454,6 @@ void Simulation::advance(bool hold_spheres) {
   lap(PassTimers::kIntegrate);
   if (!hold_spheres) dem_.half_step(dt, /*first_half=*/false);
   lap(PassTimers::kDem);
-  check_finite();
   if (!hold_spheres) {
     time_ += dt;
     ++steps_;
@@ -480,24 +479,6 @@ void Simulation::next_dt() {
   }
   dt = std::min(dt, p.fluid_drag_fraction * dem_.fluid_drag_time());  // the explicit drag
   dt_sph_ = dt;
-}
-
-void Simulation::check_finite() const {
-  const FluidParticles& f = fluid_;
-  for (std::size_t a = 0; a < f.n_owned; ++a)
-    if (!std::isfinite(f.x[a] + f.y[a] + f.z[a] + f.vx[a] + f.vy[a] + f.vz[a] + f.rho[a]))
-      throw std::runtime_error(
-          fmt::format("step {} (t = {:.6g} s): fluid particle id {} has a non-finite "
-                      "state; reduce time.cfl or raise fluid.sound_speed",
-                      steps_, time_, f.id[a]));
-  const DemParticles& s = dem_.spheres();
-  for (std::size_t j = 0; j < s.n_owned; ++j)
-    if (!std::isfinite(s.x[j] + s.y[j] + s.z[j] + s.vx[j] + s.vy[j] + s.vz[j] + s.wx[j] + s.wy[j] +
-                       s.wz[j]))
-      throw std::runtime_error(
-          fmt::format("step {} (t = {:.6g} s): sphere id {} has a non-finite state; "
-                      "raise time.dem_steps_per_contact",
-                      steps_, time_, s.id[j]));
 }
 
 }  // namespace sphdem

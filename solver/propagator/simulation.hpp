@@ -116,7 +116,6 @@ class Simulation {
   void update_pressure();
   void compute_fluid_side(bool hold_spheres);
   void apply_variational_pressure(bool hold_spheres);
-  void check_finite() const;
   double fluid_cutoff() const;
   void next_dt();
 

@@ -11,7 +11,9 @@
 #include <memory>
 
 #include "analysis/diagnostics.hpp"
+#include "analysis/neighbourhood_dump.hpp"
 #include "analysis/sediment_output.hpp"
+#include "analysis/watchdog.hpp"
 #include "io/checkpoint_file.hpp"
 #include "propagator/simulation.hpp"
 #include "run/checkpoints.hpp"
@@ -20,6 +22,7 @@
 #include "scene/contact_stiffness_rule.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/sound_speed_rule.hpp"
+#include "sph/kernel.hpp"
 #include "sph/pair_isa.hpp"
 
 namespace sphdem {
@@ -219,6 +222,32 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     r.checkpoint_seconds += since(t0);
   };
 
+  // The watchdog's stop: the step's log row, the neighbourhood dump, and the message with
+  // the last good checkpoint (the state now is not written).
+  auto stop_by_watchdog = [&](const Simulation& s, const WatchdogAlarm& alarm) {
+    log->write(diagnostics(s));
+    const fs::path dir = fs::path(opt.out_dir) / "watchdog";
+    fs::create_directories(dir);
+    const std::string dump = (dir / fmt::format("step_{:012d}.vtp", s.step_count())).string();
+    const double h = scene.fluid.smoothing_factor * scene.fluid.spacing;
+    double d_max = 0.0;
+    for (const auto& sp : scene.species) d_max = std::max(d_max, sp.d_max());
+    const double radius = std::max(3.0 * kernel::kSupport * h, 5.0 * d_max);
+    std::string dumped;
+    try {
+      const std::size_t n = write_neighbourhood_vtp(s, alarm.x, alarm.y, alarm.z, radius,
+                                                    alarm.sphere, alarm.index, dump);
+      dumped = fmt::format("; its neighbourhood ({} particles within {:.3g} m) is in {}", n, radius,
+                           dump);
+    } catch (const std::exception& e) {
+      dumped = fmt::format("; the neighbourhood dump failed: {}", e.what());
+    }
+    const auto last = CheckpointStore::list(opt.out_dir);
+    throw WatchdogError(describe_alarm(alarm, s.step_count(), s.time()) + dumped +
+                        (last.empty() ? std::string("; no checkpoint was written")
+                                      : "; the last good checkpoint is " + last.back()));
+  };
+
   double step_seconds = 0;
   const auto t_loop = Clock::now();
   auto t_progress = t_loop, t_checkpoint = t_loop;
@@ -229,6 +258,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     const auto t_step = Clock::now();
     sim.step();
     step_seconds += since(t_step);
+    if (const auto alarm = watchdog_check(sim, scene.watchdog)) stop_by_watchdog(sim, *alarm);
     st.safeguards.add(sim.voidage_clamped(), sim.omega_bounded());
     st.dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
     const bool last = sim.time() >= end * (1.0 - 1e-12);

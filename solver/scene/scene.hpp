@@ -105,6 +105,14 @@ struct CheckpointSpec {
   bool at_end = true;
 };
 
+// The watchdog's bounds (analysis/watchdog.hpp), checked after every step.
+struct WatchdogSpec {
+  bool enabled = true;
+  double density_error = 0.05;    // |rho/(eps rho0) - 1|: 5 times the weakly compressible 1 %
+  double overlap = 0.2;           // largest overlap / d (the model's limit refuses 0.1 d expected)
+  double safeguard_share = 0.01;  // share of the fluid held by the voidage floor or Omega clamp
+};
+
 // In-situ analysis through Catalyst (catalyst/, pipelines/).
 struct InSituSpec {
   double every = 0.0;  // (s) between analyses; 0 = end / 50
@@ -187,6 +195,7 @@ struct Scene {
   StartupSpec startup;
   OutputSpec output;
   CheckpointSpec checkpoint;
+  WatchdogSpec watchdog;
   InSituSpec insitu;
 
   double fill_height() const { return fluid.fill_height > 0 ? fluid.fill_height : box.length(2); }

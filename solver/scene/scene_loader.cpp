@@ -405,8 +405,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   bool kernel_auto = true, drag_kernel_given = false, stiffness_auto = true;
   MapReader top(root, "", file);
   top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles",
-              "contact", "drag", "coupling", "time", "startup", "output", "checkpoint", "insitu",
-              "fidelity"});
+              "contact", "drag", "coupling", "time", "startup", "output", "checkpoint", "watchdog",
+              "insitu", "fidelity"});
   sc.name = top.text("name", "scene");
   sc.description = top.text("description", "");
   // the preset's values are the defaults of the keys it names (scene/fidelity.hpp)
@@ -738,6 +738,15 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     r.finish();
   }
   {
+    MapReader r(top.child("watchdog"), "watchdog", file);
+    WatchdogSpec& w = sc.watchdog;
+    w.enabled = r.boolean("enabled", w.enabled);
+    w.density_error = r.number("density_error", w.density_error, 0.0, kInf, true);
+    w.overlap = r.number("overlap", w.overlap, 0.0, kInf, true);
+    w.safeguard_share = r.number("safeguard_share", w.safeguard_share, 0.0, 1.0);
+    r.finish();
+  }
+  {
     MapReader r(top.child("insitu"), "insitu", file);
     InSituSpec& in = sc.insitu;
     in.enabled = r.boolean("enabled", in.enabled);
@@ -987,6 +996,11 @@ std::string scene_to_yaml(const Scene& sc) {
     << YAML::Value << c.every << YAML::Key << "wall_interval" << YAML::Value << c.wall_interval
     << YAML::Key << "keep" << YAML::Value << c.keep << YAML::Key << "at_end" << YAML::Value
     << c.at_end << YAML::EndMap;
+  const WatchdogSpec& w = sc.watchdog;
+  e << YAML::Key << "watchdog" << YAML::Value << YAML::BeginMap << YAML::Key << "enabled"
+    << YAML::Value << w.enabled << YAML::Key << "density_error" << YAML::Value << w.density_error
+    << YAML::Key << "overlap" << YAML::Value << w.overlap << YAML::Key << "safeguard_share"
+    << YAML::Value << w.safeguard_share << YAML::EndMap;
   const InSituSpec& in = sc.insitu;
   e << YAML::Key << "insitu" << YAML::Value << YAML::BeginMap << YAML::Key << "enabled"
     << YAML::Value << in.enabled << YAML::Key << "every" << YAML::Value << in.every << YAML::Key

@@ -1068,6 +1068,8 @@ TEST(SceneReadme, DocumentsEveryKeyEveryCaseAndEveryLogColumn) {
       {"startup.", "startup: {zz_unknown: 1}\n"},
       {"output.", "output: {zz_unknown: 1}\n"},
       {"output.vtk.", "output: {vtk: {zz_unknown: 1}}\n"},
+      {"checkpoint.", "checkpoint: {zz_unknown: 1}\n"},
+      {"watchdog.", "watchdog: {zz_unknown: 1}\n"},
       {"insitu.", "insitu: {zz_unknown: 1}\n"},
   };
   std::size_t n = 0;

@@ -1,0 +1,169 @@
+// The watchdog (analysis/watchdog.hpp): each cause provoked by a scene, named with its
+// particle, quantity and key; a healthy run raises nothing; the runner stops a run with
+// the message, a neighbourhood dump and the last good checkpoint.
+#include "analysis/watchdog.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+
+#include "propagator/simulation.hpp"
+#include "run/runner.hpp"
+#include "scene/scene.hpp"
+
+using namespace sphdem;
+
+namespace {
+
+// 100 um glass settling onto the wall in a 1.6 mm water column.
+const char* const kSettling = R"(
+name: settling
+domain: {size: [0.0016, 0.0016, 0.0016]}
+fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4}
+species: [{name: glass, diameter: 1.0e-4, density: 2500}]
+particles:
+  - {type: random, species: glass, min: [0, 0, 0], max: [0.0016, 0.0016, 0.0008], voidage: 0.8, seed: 2}
+startup: {relax_steps: 2}
+)";
+// A bed of 100 um spheres, 3 layers, resting on the wall (dry: no fluid).
+const char* const kDryBed = R"(
+name: dry_bed
+domain: {size: [0.0016, 0.0016, 0.004]}
+fluid: {enabled: false}
+species: [{name: glass, diameter: 1.0e-4, density: 2500}]
+particles:
+  - {type: lattice, species: glass, min: [0, 0, 0], max: [0.0016, 0.0016, 0.0003001], voidage: 0.4765}
+contact: {stiffness: 100, restitution: 0.5}
+)";
+
+// Steps until the watchdog raises an alarm (nullopt if none within max_steps).
+std::optional<WatchdogAlarm> run_until_alarm(const Scene& scene, int max_steps) {
+  Simulation sim(scene);
+  sim.relax();
+  for (int k = 0; k < max_steps; ++k) {
+    sim.step();
+    if (auto alarm = watchdog_check(sim, scene.watchdog)) return alarm;
+  }
+  return std::nullopt;
+}
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(Watchdog, AHealthyRunRaisesNothing) {
+  EXPECT_FALSE(run_until_alarm(load_scene_text(kSettling, "t"), 150));
+  EXPECT_FALSE(run_until_alarm(load_scene_text(kDryBed, "t"), 4));  // 2430 sub-steps each
+}
+
+TEST(Watchdog, TooFewDemSubStepsPerContact) {
+  Scene sc = load_scene_text(kDryBed, "t", {"particles.0.velocity=[0, 0, -0.3]"});
+  sc.time.dem_steps_per_contact = 1.2;  // past the loader's range [5, 1000]: unstable springs
+  const auto alarm = run_until_alarm(sc, 400);
+  ASSERT_TRUE(alarm);
+  EXPECT_TRUE(alarm->sphere);
+  EXPECT_TRUE(has(alarm->cause, "dt_DEM too large for this k")) << alarm->cause;
+  EXPECT_TRUE(has(alarm->cause, "time.dem_steps_per_contact")) << alarm->cause;
+  EXPECT_EQ(alarm->kind, "glass");
+}
+
+TEST(Watchdog, ASpringTooSoftForTheLoad) {
+  Scene sc = load_scene_text(kDryBed, "t", {"contact.stiffness=0.002"});
+  const auto alarm = run_until_alarm(sc, 20000);
+  ASSERT_TRUE(alarm);
+  EXPECT_EQ(alarm->quantity, "overlap / d");
+  EXPECT_GT(alarm->value, 0.2);
+  EXPECT_TRUE(has(alarm->cause, "contact.stiffness")) << alarm->cause;
+}
+
+TEST(Watchdog, ASoundSpeedTooLowForTheColumn) {
+  // g H / c0^2 = 9.81 * 1.6e-3 / 0.05^2 = 6: the column cannot be weakly compressible
+  const auto alarm =
+      run_until_alarm(load_scene_text(kSettling, "t", {"fluid.sound_speed=0.05"}), 200);
+  ASSERT_TRUE(alarm);
+  EXPECT_FALSE(alarm->sphere);
+  EXPECT_TRUE(has(alarm->quantity, "density error")) << alarm->quantity;
+  EXPECT_TRUE(has(alarm->cause, "raise fluid.sound_speed")) << alarm->cause;
+}
+
+TEST(Watchdog, AnSphStepPastItsStabilityNamesTheCfl) {
+  Scene sc = load_scene_text(kSettling, "t");
+  sc.time.cfl = 4.0;  // past the loader's range (0, 1)
+  const auto alarm = run_until_alarm(sc, 200);
+  ASSERT_TRUE(alarm);
+  EXPECT_FALSE(alarm->sphere);
+  EXPECT_TRUE(has(alarm->cause, "lower time.cfl")) << alarm->quantity << ": " << alarm->cause;
+}
+
+TEST(Watchdog, NonFiniteStateWithTheOtherBoundsOff) {
+  Scene sc = load_scene_text(
+      kSettling, "t",
+      {"watchdog.density_error=1e300", "watchdog.overlap=1e300", "watchdog.safeguard_share=1"});
+  sc.time.cfl = 4.0;
+  const auto alarm = run_until_alarm(sc, 2000);
+  ASSERT_TRUE(alarm);
+  EXPECT_TRUE(has(alarm->quantity, "non-finite") || has(alarm->quantity, "wall") ||
+              has(alarm->quantity, "domain"))
+      << alarm->quantity;
+  EXPECT_TRUE(has(alarm->cause, "time.cfl")) << alarm->cause;
+}
+
+TEST(Watchdog, ASphereThrownOutOfTheBox) {
+  const auto alarm = run_until_alarm(
+      load_scene_text(kDryBed, "t", {"particles.0.velocity=[0, 0, 2]", "gravity=[0, 0, 0]"}), 2000);
+  ASSERT_TRUE(alarm);
+  EXPECT_EQ(alarm->quantity, "left the domain");
+  EXPECT_TRUE(alarm->sphere);
+  EXPECT_GT(alarm->z, 0.004);
+  EXPECT_TRUE(has(alarm->cause, "domain.size")) << alarm->cause;
+}
+
+TEST(Watchdog, TheVoidageFloorHoldingTheFluid) {
+  // a bed at eps 0.48 under a floor of 0.6: the floor replaces the voidage in the bed
+  const auto alarm = run_until_alarm(
+      load_scene_text(kSettling, "t",
+                      {"particles.0={type: lattice, species: glass, min: [0, 0, 0], max: [0.0016, "
+                       "0.0016, 0.0010001], voidage: 0.4765}",
+                       "coupling.voidage_floor=0.7"}),
+      5);
+  ASSERT_TRUE(alarm);
+  EXPECT_TRUE(has(alarm->quantity, "voidage floor")) << alarm->quantity;
+  EXPECT_GT(alarm->value, 0.01);
+  EXPECT_TRUE(has(alarm->cause, "coupling.voidage_floor")) << alarm->cause;
+}
+
+TEST(Watchdog, TheRunnerStopsWithTheDumpAndTheLastCheckpoint) {
+  namespace fs = std::filesystem;
+  const std::string dir = (fs::temp_directory_path() / "sphdem_watchdog_test").string();
+  fs::remove_all(dir);
+  // thrown out of the box after a few checkpoints: the run passes the model's limits
+  const Scene sc = load_scene_text(
+      kDryBed, "t",
+      {"domain.size=[0.0016, 0.0016, 0.002]", "particles.0.max=[0.0016, 0.0016, 0.0001001]",
+       "particles.0.velocity=[0, 0, 0.08]", "gravity=[0, 0, 0]", "contact.stiffness=0.05",
+       "time.end=0.1", "checkpoint.every=0.0005"});
+  RunOptions opt;
+  opt.out_dir = dir;
+  try {
+    run_scene(sc, opt);
+    FAIL() << "the run was not stopped";
+  } catch (const WatchdogError& e) {
+    const std::string m = e.what();
+    EXPECT_TRUE(has(m, "watchdog at step")) << m;
+    EXPECT_TRUE(has(m, "sphere id")) << m;
+    EXPECT_TRUE(has(m, "left the domain")) << m;
+    EXPECT_TRUE(has(m, "the last good checkpoint is " + dir)) << m;
+    EXPECT_TRUE(has(m, dir + "/watchdog/step_")) << m;
+    const auto dumps = fs::directory_iterator(dir + "/watchdog");
+    ASSERT_NE(dumps, fs::directory_iterator());
+    std::ifstream in(dumps->path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_TRUE(has(text, "<VTKFile type=\"PolyData\"")) << text.substr(0, 200);
+    EXPECT_TRUE(has(text, "Name=\"culprit\"")) << text.substr(0, 200);
+  }
+}
+
+}  // namespace
