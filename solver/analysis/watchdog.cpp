@@ -53,6 +53,14 @@ WatchdogAlarm sphere_alarm(const Simulation& sim, std::size_t j, const std::stri
   return w;
 }
 
+// Past the periodic faces by more than half a box: positions are wrapped into the box
+// only when the lists are rebuilt (a fraction of the skin out at most), so a particle
+// that far out has moved more than a box since.
+bool far_sideways(const Box& box, double x, double y) {
+  return x < box.lo[0] - 0.5 * box.length(0) || x > box.hi[0] + 0.5 * box.length(0) ||
+         y < box.lo[1] - 0.5 * box.length(1) || y > box.hi[1] + 0.5 * box.length(1);
+}
+
 // Why a contact went wrong: too few sub-steps per contact, or a spring too soft.
 std::string contact_cause(const Simulation& sim) {
   const double per_contact = sim.contact_time() / std::max(sim.dt_dem(), 1e-300);
@@ -135,9 +143,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
       bad_fluid = std::min(bad_fluid, a);
       continue;
     }
-    const bool outside = f.z[a] < floor_z || f.z[a] > top_z ||
-                         std::abs(f.x[a] - box.wrap(0, f.x[a])) > 0.5 * box.length(0) ||
-                         std::abs(f.y[a] - box.wrap(1, f.y[a])) > 0.5 * box.length(1);
+    const bool outside = f.z[a] < floor_z || f.z[a] > top_z || far_sideways(box, f.x[a], f.y[a]);
     if (outside) out_fluid = std::min(out_fluid, a);
     if (f.kind[a] != kFluid) continue;
     const double e = std::abs(f.rho[a] / (f.eps[a] * rho0) - 1.0);
@@ -152,9 +158,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
       bad_sphere = std::min(bad_sphere, j);
       continue;
     }
-    const bool outside = s.z[j] < box.lo[2] || s.z[j] > top_z ||
-                         std::abs(s.x[j] - box.wrap(0, s.x[j])) > 0.5 * box.length(0) ||
-                         std::abs(s.y[j] - box.wrap(1, s.y[j])) > 0.5 * box.length(1);
+    const bool outside = s.z[j] < box.lo[2] || s.z[j] > top_z || far_sideways(box, s.x[j], s.y[j]);
     if (outside) out_sphere = std::min(out_sphere, j);
     const double o = s.overlap_max[j] / (2.0 * s.radius[j]);
     if (o > worst_overlap) {

@@ -119,7 +119,7 @@ class WatchdogDumpOpensInParaView(unittest.TestCase):
                         "species: [{name: glass, diameter: 1.0e-4, density: 2500}]\n"
                         "particles:\n  - {type: lattice, species: glass, min: [0, 0, 0], "
                         "max: [0.0016, 0.0016, 0.0001001], voidage: 0.4765, velocity: [0, 0, 0.08]}\n"
-                        "gravity: [0, 0, 0]\ncontact: {stiffness: 0.05}\ntime: {end: 0.1}\n"
+                        "gravity: [0, 0, 0]\ncontact: {stiffness: 0.1}\ntime: {end: 0.1}\n"
                         "checkpoint: {every: 0.0005}\ninsitu: {enabled: false}\n")
             out = os.path.join(tmp, "run")
             p = subprocess.run([SPHDEM, "run", scene, "--out", out], capture_output=True, text=True)
