@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "analysis/contact_network.hpp"
 #include "analysis/voidage_grid.hpp"
@@ -154,8 +155,10 @@ int main(int argc, char** argv) {
       std::cerr << "sphdem: run failed: " << failure << "\n";
       return 1;
     }
-  } catch (const sphdem::SceneError& e) {
-    std::cerr << "sphdem: error: " << e.what() << "\n";
+  } catch (const sphdem::SceneError& e) {  // every problem of the scene, one a line
+    std::istringstream problems(e.what());
+    for (std::string line; std::getline(problems, line);)
+      std::cerr << "sphdem: error: " << line << "\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "sphdem: run failed: " << e.what() << "\n";
