@@ -745,12 +745,29 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
     const double um = std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.fill_height()));
     sc.fluid.sound_speed = sc.fluid.sound_speed_factor * std::max(um, 1e-6);
   }
+  // The automatic values come from the file's own, and extreme ones (a density of 1e300)
+  // leave them infinite or NaN: no run can use that, and case.yaml cannot record it.
+  auto finite = [&](const char* key, double v, const char* from) {
+    if (!std::isfinite(v))
+      problems.add(key, fmt::format("its automatic value is {} (from {}); give it, or bring those "
+                                    "into a physical range",
+                                    v, from));
+    return std::isfinite(v);
+  };
+  if (finite("fluid.expected_speed", sc.fluid.expected_speed,
+             "the species' diameters and densities, fluid.density, fluid.viscosity, gravity and "
+             "drag.law"))
+    finite("fluid.sound_speed", sc.fluid.sound_speed,
+           "fluid.expected_speed, fluid.sound_speed_factor, gravity and the fill height");
+  problems.throw_if_any();
   resolve_sphere_kernel(sc, kernel_auto, drag_kernel_given, problems);
   problems.throw_if_any();
   if (stiffness_auto) {
     const StiffnessChoice c = choose_contact_stiffness(sc);
     sc.contact.normal.k = c.k;
     sc.contact.stiffness_reason = c.reason;
+    finite("contact.stiffness", c.k,
+           "contact.max_overlap, the species, the groups' speeds, gravity and the fluid");
   }
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
@@ -766,7 +783,10 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
           sp.diameter, sp.density, sc.fluid.density, sc.fluid.viscosity, g, grp.voidage);
       break;
     }
+    finite("insitu.reference_velocity", sc.insitu.reference_velocity,
+           "the first block's or suspension's species and voidage, and the fluid");
   }
+  problems.throw_if_any();
   return sc;
 }
 

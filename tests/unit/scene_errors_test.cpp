@@ -188,6 +188,23 @@ TEST(SceneErrorsAll, SetListIndexIsDigitsOnly) {
   EXPECT_TRUE(problems(kGood, {"particles.0.rigid=true"}).empty());
 }
 
+// Found by tests/fuzz (corpus: huge_density.yaml): a density of 1e300 loaded with the
+// automatic contact.stiffness NaN (the impact's m v^2 overflows), which case.yaml wrote
+// as .nan and could not load back, and `sphdem check` blamed contact.damping for.
+TEST(SceneErrorsAll, AnAutomaticValueThatIsNotFiniteIsRefused) {
+  const std::string huge = replaced(kGood, "density: 2500", "density: 1e300");
+  const auto lines = problems(huge);
+  ASSERT_EQ(lines.size(), 1u) << ::testing::PrintToString(lines);
+  const std::string k = line_of(lines, "contact.stiffness");
+  EXPECT_TRUE(contains(k, "its automatic value is") && contains(k, "nan")) << k;
+  // given, the spring is the file's, and the scene loads
+  EXPECT_TRUE(problems(huge + "contact: {stiffness: 100}\n").empty());
+  // a viscosity of 1e-300 (a terminal speed of 2.5e235 m/s) the same
+  EXPECT_TRUE(contains(line_of(problems(replaced(kGood, "viscosity: 1.0e-3", "viscosity: 1e-300")),
+                               "contact.stiffness"),
+                       "its automatic value is"));
+}
+
 TEST(DidYouMean, EditDistanceAndTheRule) {
   EXPECT_EQ(edit_distance("viscosty", "viscosity"), 1u);
   EXPECT_EQ(edit_distance("ned", "end"), 1u);  // two neighbours swapped
