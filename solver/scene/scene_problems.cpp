@@ -71,31 +71,27 @@ std::string SceneProblems::origin(const std::string& key) const {
 }
 
 // The hint: the closest key of its own section; else the same key in other sections;
-// else the closest key of other sections.
-std::string SceneProblems::unknown_line(const Entry& e) const {
+// else the closest key of other sections. `known` is every (section, key) declared, with
+// the sections' list indices as N, each once.
+std::string SceneProblems::unknown_line(
+    const Entry& e, const std::vector<std::pair<std::string, std::string>>& known) const {
   std::string hint = closest_name(e.key, e.allowed);
   if (hint.empty()) {
     const std::string own = generic(e.section);
-    std::vector<std::string> same, all;
-    for (const auto& [section, keys] : sections_) {
-      if (generic(section) == own) continue;
-      for (const std::string& k : keys) {
-        const std::string full = join(generic(section), k);
-        if (std::find(all.begin(), all.end(), full) != all.end()) continue;
-        all.push_back(full);
-        if (k == e.key) same.push_back(full);
-      }
+    std::vector<std::string> same, keys, full;
+    for (const auto& [section, k] : known) {
+      if (section == own) continue;
+      if (k == e.key && same.size() < 3) same.push_back(join(section, k));
+      keys.push_back(k);
+      full.push_back(join(section, k));
     }
     if (!same.empty()) {
-      if (same.size() > 3) same.resize(3);
       hint = fmt::format("{}", fmt::join(same, "' or '"));
     } else {
-      std::vector<std::string> last_parts;  // compare the key with the last part of each path
-      for (const std::string& full : all) last_parts.push_back(full.substr(full.rfind('.') + 1));
-      const std::string best = closest_name(e.key, last_parts);
-      for (std::size_t i = 0; i < all.size() && !best.empty(); ++i)
-        if (last_parts[i] == best) {
-          hint = all[i];
+      const std::string best = closest_name(e.key, keys);
+      for (std::size_t i = 0; i < keys.size() && !best.empty(); ++i)
+        if (keys[i] == best) {
+          hint = full[i];
           break;
         }
     }
@@ -108,10 +104,17 @@ std::string SceneProblems::unknown_line(const Entry& e) const {
 
 void SceneProblems::throw_if_any() const {
   if (entries_.empty()) return;
+  std::vector<std::pair<std::string, std::string>> known;
+  std::set<std::pair<std::string, std::string>> seen;
+  for (const auto& [section, keys] : sections_) {
+    const std::string g = generic(section);
+    for (const std::string& k : keys)
+      if (seen.emplace(g, k).second) known.emplace_back(g, k);
+  }
   std::string text;
   for (const Entry& e : entries_) {
     if (!text.empty()) text += "\n";
-    text += e.line.empty() ? unknown_line(e) : e.line;
+    text += e.line.empty() ? unknown_line(e, known) : e.line;
   }
   throw SceneError(text);
 }

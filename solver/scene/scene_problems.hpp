@@ -43,7 +43,8 @@ class SceneProblems {
     std::vector<std::string> allowed;
   };
   std::string origin(const std::string& key) const;
-  std::string unknown_line(const Entry& e) const;
+  std::string unknown_line(const Entry& e,
+                           const std::vector<std::pair<std::string, std::string>>& known) const;
   std::string file_;
   std::vector<Entry> entries_;
   std::vector<std::pair<std::string, std::set<std::string>>> sections_;
