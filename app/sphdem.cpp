@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "analysis/contact_network.hpp"
 #include "analysis/voidage_grid.hpp"
@@ -228,8 +229,10 @@ int main(int argc, char** argv) {
       return breaches.empty() ? 0 : 2;
     }
     return run_with_analysis(scene, out_dir, no_insitu, nullptr);
-  } catch (const sphdem::SceneError& e) {
-    std::cerr << "sphdem: error: " << e.what() << "\n";
+  } catch (const sphdem::SceneError& e) {  // every problem of the scene, one a line
+    std::istringstream problems(e.what());
+    for (std::string line; std::getline(problems, line);)
+      std::cerr << "sphdem: error: " << line << "\n";
     return 2;
   } catch (const sphdem::CheckpointError& e) {
     std::cerr << "sphdem: error: " << e.what() << "\n";

@@ -1,6 +1,7 @@
 // Scene files: strict YAML reading (unknown keys, wrong types and out-of-range values
-// are errors naming the file, the key and what is allowed), --set overrides, and the
-// resolved scene written back as YAML.
+// are errors naming the file, the key and what is allowed; every problem of a file is
+// reported at once, scene/scene_problems.hpp), --set overrides, and the resolved scene
+// written back as YAML.
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
@@ -8,15 +9,19 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "coupling/hindered_settling.hpp"
 #include "scene/contact_stiffness_rule.hpp"
+#include "scene/did_you_mean.hpp"
 #include "scene/fidelity.hpp"
 #include "scene/kernel_width_rule.hpp"
+#include "scene/map_reader.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_limits.hpp"
+#include "scene/scene_problems.hpp"
 
 namespace sphdem {
 
@@ -29,188 +34,56 @@ int Scene::species_index(const std::string& n) const {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-const char* const kPipelineNames[] = {"voidage_height", "interfaces", "com_tracks", "snapshots"};
+const std::vector<std::string> kPipelineNames = {"voidage_height", "interfaces", "com_tracks",
+                                                 "snapshots"};
 
-// Reads one YAML map, remembering which keys were asked for so that any other key
-// is reported as unknown, with the list of allowed ones.
-class MapReader {
- public:
-  MapReader(const YAML::Node& node, std::string path, const std::string& file)
-      : node_(node), path_(std::move(path)), file_(file) {
-    if (node_ && node_.IsNull()) node_ = YAML::Node(YAML::NodeType::Undefined);  // "section:" alone
-    if (node_ && !node_.IsMap()) fail(path_, "must be a map of keys");
-    std::set<std::string> seen;
-    for (const auto& kv : node_) {  // yaml-cpp keeps the first of duplicate keys silently
-      if (!kv.first.IsScalar()) fail(path_, "every key must be a plain name");
-      const std::string k = kv.first.Scalar();
-      if (!seen.insert(k).second) fail(key(k), "given twice");
-    }
-  }
-  // Declares the keys allowed here and reports any other key at once (used for the
-  // top-level sections, so a misspelt section is named before its absence bites).
-  void expect(std::initializer_list<const char*> keys) {
-    for (const char* k : keys) allowed_.insert(k);
-    finish();
-  }
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw SceneError(fmt::format("{}: key '{}': {}", file_, key.empty() ? "<top>" : key, what));
-  }
-  std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
-  bool has(const std::string& k) {
-    allowed_.insert(k);
-    const YAML::Node& n = node_;
-    return n && n[k];
-  }
-  YAML::Node child(const std::string& k) {
-    allowed_.insert(k);
-    const YAML::Node& n = node_;  // const lookup: never inserts the key
-    return n ? n[k] : YAML::Node(YAML::NodeType::Undefined);
-  }
+std::vector<std::string> species_names(const Scene& sc) {
+  std::vector<std::string> names;
+  for (const auto& s : sc.species) names.push_back(s.name);
+  return names;
+}
 
-  // A number in [lo, hi] (open ends when lo_open/hi_open).
-  double number(const std::string& k, double def, double lo, double hi, bool lo_open = false,
-                bool hi_open = false) {
-    double v = def;
-    if (has(k)) v = scalar<double>(k, "a number");
-    check_range(key(k), v, lo, hi, lo_open, hi_open);
-    return v;
-  }
-  void check_range(const std::string& full_key, double v, double lo, double hi,
-                   bool lo_open = false, bool hi_open = false) const {
-    if (!std::isfinite(v)) fail(full_key, fmt::format("must be a finite number (got {})", v));
-    const bool bad = (lo_open ? v <= lo : v < lo) || (hi_open ? v >= hi : v > hi);
-    if (bad)
-      fail(full_key, fmt::format("must be in {}{}, {}{} (got {})", lo_open ? "(" : "[", lo, hi,
-                                 hi_open ? ")" : "]", v));
-  }
-  // A non-empty list of numbers, each in [lo, hi] (open ends as for number()); an entry
-  // in error is named by its index, 'key.i'.
-  std::vector<double> numbers(const std::string& k, double lo, double hi, bool lo_open = false) {
-    const YAML::Node n = child(k);
-    if (!n || !n.IsSequence() || n.size() == 0) fail(key(k), "must be a non-empty list of numbers");
-    std::vector<double> v(n.size());
-    for (std::size_t i = 0; i < n.size(); ++i) {
-      const std::string ki = fmt::format("{}.{}", key(k), i);
-      if (!n[i].IsScalar()) fail(ki, "must be a number");
-      try {
-        v[i] = n[i].as<double>();
-      } catch (const YAML::Exception&) {
-        fail(ki, fmt::format("must be a number (got '{}')", n[i].Scalar()));
-      }
-      check_range(ki, v[i], lo, hi, lo_open);
-    }
-    return v;
-  }
-  std::int64_t whole64(const std::string& k, std::int64_t def, std::int64_t lo, std::int64_t hi) {
-    std::int64_t v = def;
-    if (has(k)) v = scalar<std::int64_t>(k, "a whole number");
-    if (v < lo || v > hi)
-      fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
-    return v;
-  }
-  // A number the file must give (no default).
-  double required(const std::string& k, double lo, double hi, bool lo_open = false) {
-    if (!has(k))
-      fail(key(k), fmt::format("is required: a number in {}{}, {}]", lo_open ? "(" : "[", lo, hi));
-    return number(k, 0.0, lo, hi, lo_open);
-  }
-  int integer(const std::string& k, int def, int lo, int hi) {
-    int v = def;
-    if (has(k)) v = scalar<int>(k, "a whole number");
-    if (v < lo || v > hi)
-      fail(key(k), fmt::format("must be a whole number in [{}, {}] (got {})", lo, hi, v));
-    return v;
-  }
-  bool boolean(const std::string& k, bool def) {
-    return has(k) ? scalar<bool>(k, "true or false") : def;
-  }
-  std::string text(const std::string& k, const std::string& def) {
-    return has(k) ? scalar<std::string>(k, "a string") : def;
-  }
-  std::string choice(const std::string& k, const std::string& def,
-                     const std::vector<std::string>& allowed) {
-    const std::string v = text(k, def);
-    if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
-      fail(key(k), fmt::format("must be one of: {} (got '{}')", fmt::join(allowed, ", "), v));
-    return v;
-  }
-  std::array<double, 3> vec3(const std::string& k, std::array<double, 3> def) {
-    if (!has(k)) return def;
-    const YAML::Node n = node_[k];
-    if (!n.IsSequence() || n.size() != 3) fail(key(k), "must be a list of 3 numbers [x, y, z]");
-    std::array<double, 3> v{};
-    for (int d = 0; d < 3; ++d) {
-      try {
-        v[d] = n[d].as<double>();
-      } catch (const YAML::Exception&) {
-        fail(key(k), "must be a list of 3 numbers [x, y, z]");
-      }
-      if (!std::isfinite(v[d])) fail(key(k), "must be finite numbers");
-    }
-    return v;
-  }
-  // Reports keys that were never asked for.
-  void finish() const {
-    if (!node_) return;
-    for (const auto& kv : node_) {
-      const std::string k = kv.first.Scalar();
-      if (!allowed_.count(k))
-        fail(key(k), fmt::format("unknown key; allowed here: {}", fmt::join(allowed_, ", ")));
-    }
-  }
+// A list index of a --set path: digits only (std::stoul would take "-1" and "1x").
+std::optional<std::size_t> list_index(const std::string& part) {
+  if (part.empty() || part.size() > 9 ||
+      !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return std::nullopt;
+  return std::stoul(part);
+}
 
- private:
-  template <class T>
-  T scalar(const std::string& k, const char* what) {
-    const YAML::Node n = node_[k];
-    if (!n.IsScalar()) fail(key(k), fmt::format("must be {}", what));
-    try {
-      return n.as<T>();
-    } catch (const YAML::Exception&) {
-      fail(key(k), fmt::format("must be {} (got '{}')", what, n.Scalar()));
-    }
-  }
-  YAML::Node node_;
-  std::string path_;
-  const std::string& file_;
-  std::set<std::string> allowed_;
-};
-
-void apply_override(YAML::Node root, const std::string& assignment, const std::string& file) {
+// One --set key.path=value into the YAML tree; a bad assignment is a problem and is skipped.
+void apply_override(YAML::Node root, const std::string& assignment, SceneProblems& problems) {
+  auto fail = [&](const std::string& what) {
+    problems.add_line(fmt::format("{}: --set '{}': {}", problems.file(), assignment, what));
+  };
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw SceneError(fmt::format("{}: --set '{}': expected key.path=value", file, assignment));
+  if (eq == std::string::npos || eq == 0) return fail("expected key.path=value");
   const std::string path = assignment.substr(0, eq);
   YAML::Node value;
   try {
     value = YAML::Load(assignment.substr(eq + 1));
   } catch (const YAML::Exception& e) {
-    throw SceneError(
-        fmt::format("{}: --set '{}': value is not valid YAML ({})", file, assignment, e.what()));
+    return fail(fmt::format("value is not valid YAML ({})", e.what()));
   }
   std::vector<std::string> parts;
   std::stringstream ss(path);
   for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+  if (path.back() == '.' || std::find(parts.begin(), parts.end(), "") != parts.end())
+    return fail("the key path has an empty part");
   YAML::Node node = root;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const bool last = k + 1 == parts.size();
     if (node.IsScalar())
-      throw SceneError(fmt::format("{}: --set '{}': '{}' holds a value, not a map of keys", file,
-                                   assignment, fmt::join(parts.begin(), parts.begin() + k, ".")));
+      return fail(fmt::format("'{}' holds a value, not a map of keys",
+                              fmt::join(parts.begin(), parts.begin() + k, ".")));
     if (node.IsSequence()) {
-      std::size_t idx = 0;
-      try {
-        idx = std::stoul(parts[k]);
-      } catch (...) {
-        idx = node.size();
-      }
-      if (idx >= node.size())
-        throw SceneError(fmt::format("{}: --set '{}': '{}' must be an index in [0, {})", file,
-                                     assignment, parts[k], node.size()));
+      const std::optional<std::size_t> idx = list_index(parts[k]);
+      if (!idx || *idx >= node.size())
+        return fail(fmt::format("'{}' must be an index in [0, {})", parts[k], node.size()));
       if (last)
-        node[idx] = value;
+        node[*idx] = value;
       else
-        node.reset(node[idx]);
+        node.reset(node[*idx]);
     } else {
       if (last)
         node[parts[k]] = value;
@@ -220,6 +93,7 @@ void apply_override(YAML::Node root, const std::string& assignment, const std::s
       }
     }
   }
+  problems.override_applied(path, assignment);
 }
 
 // The largest Stokes speed of a species: that of its largest sphere.
@@ -234,82 +108,124 @@ void check_sum_to_one(MapReader& r, const std::string& k, const std::vector<doub
   if (std::abs(sum - 1.0) > 1e-6) r.fail(r.key(k), fmt::format("must sum to 1 (got {})", sum));
 }
 
+// A species name a group or key refers to: one listed under 'species' (a misspelling
+// gets a did-you-mean). False when it is not.
+bool known_species(MapReader& r, const Scene& sc, const std::string& key, const std::string& name) {
+  if (sc.species_index(name) >= 0) return true;
+  r.fail(key, fmt::format("'{}' is not a species listed under 'species'{}", name,
+                          did_you_mean(name, species_names(sc))));
+  return false;
+}
+
 // particles.N.species of a random group: one name, or a list of names with their number
-// fractions in particles.N.fractions (optional for one name).
-void read_mixture(MapReader& r, const Scene& sc, ParticleGroupSpec& g) {
+// fractions in particles.N.fractions (optional for one name). False when the species are
+// not known (the group's checks that need them are skipped).
+bool read_mixture(MapReader& r, const Scene& sc, ParticleGroupSpec& g) {
   const YAML::Node n = r.child("species");
-  if (!n) r.fail(r.key("species"), "is required: a species name or a list of names");
+  if (!n) {
+    r.fail(r.key("species"), "is required: a species name or a list of names");
+    return false;
+  }
   if (n.IsScalar()) {
     g.mixture = {n.Scalar()};
   } else if (n.IsSequence() && n.size() > 0) {
     for (std::size_t i = 0; i < n.size(); ++i) {
-      if (!n[i].IsScalar())
+      if (!n[i].IsScalar()) {
         r.fail(fmt::format("{}.{}", r.key("species"), i), "must be a species name");
+        return false;
+      }
       g.mixture.push_back(n[i].Scalar());
     }
   } else {
     r.fail(r.key("species"), "must be a species name or a non-empty list of names");
+    return false;
   }
+  bool ok = true;
   for (std::size_t i = 0; i < g.mixture.size(); ++i) {
     const std::string k =
         n.IsScalar() ? r.key("species") : fmt::format("{}.{}", r.key("species"), i);
-    if (sc.species_index(g.mixture[i]) < 0)
-      r.fail(k, fmt::format("'{}' is not a species listed under 'species'", g.mixture[i]));
+    ok = known_species(r, sc, k, g.mixture[i]) && ok;
     for (std::size_t j = 0; j < i; ++j)
-      if (g.mixture[j] == g.mixture[i])
+      if (g.mixture[j] == g.mixture[i]) {
         r.fail(k, fmt::format("'{}' is listed twice", g.mixture[i]));
+        ok = false;
+        break;
+      }
   }
   g.species = g.mixture.front();
   if (g.mixture.size() > 1 && !r.has("fractions"))
     r.fail(r.key("fractions"),
            "is required with a list of species: one number fraction per species, summing to 1");
   if (r.has("fractions")) {
-    g.fractions = r.numbers("fractions", 0.0, 1.0, true);
-    if (g.fractions.size() != g.mixture.size())
-      r.fail(r.key("fractions"),
-             fmt::format("must have one entry per species ({} species, {} fractions)",
-                         g.mixture.size(), g.fractions.size()));
-    check_sum_to_one(r, "fractions", g.fractions);
+    if (const auto f = r.numbers("fractions", 0.0, 1.0, true)) {
+      g.fractions = *f;
+      if (g.fractions.size() != g.mixture.size())
+        r.fail(r.key("fractions"),
+               fmt::format("must have one entry per species ({} species, {} fractions)",
+                           g.mixture.size(), g.fractions.size()));
+      check_sum_to_one(r, "fractions", g.fractions);
+    }
   }
   if (g.mixture.size() == 1) g.fractions = {1.0};  // what case.yaml implies when it writes one name
+  return ok;
 }
 
 // species.N.size_distribution: one of the laws of size_distribution.hpp. Only the keys
-// of the chosen law are allowed.
-SizeDistribution read_size_distribution(const YAML::Node& node, const std::string& path,
-                                        const std::string& file) {
-  MapReader r(node, path, file);
+// of the chosen law are allowed. Nothing when the law or one of its values is bad.
+std::optional<SizeDistribution> read_size_distribution(const YAML::Node& node,
+                                                       const std::string& path,
+                                                       SceneProblems& problems) {
+  MapReader r(node, path, problems);
   SizeDistribution L;
-  if (!r.has("law")) r.fail(r.key("law"), "is required: one of list, uniform, normal, lognormal");
-  const std::string law = r.choice("law", "", {"list", "uniform", "normal", "lognormal"});
+  if (!r.has("law")) {
+    r.fail(r.key("law"), "is required: one of list, uniform, normal, lognormal");
+    r.finish(false);  // which keys apply depends on the law
+    return std::nullopt;
+  }
+  const std::optional<std::string> law_given =
+      r.choice("law", "", {"list", "uniform", "normal", "lognormal"});
+  if (!law_given) {
+    r.finish(false);
+    return std::nullopt;
+  }
+  const std::string& law = *law_given;
   auto bounds = [&] {
     L.min = r.required("min", 0.0, kInf, true);
     L.max = r.required("max", 0.0, kInf, true);
-    if (L.max <= L.min)
+    if (r.clean() && L.max <= L.min)
       r.fail(r.key("max"), fmt::format("must be > min = {} (got {})", L.min, L.max));
   };
   if (law == "list") {
     L.law = SizeLaw::kList;
-    L.diameters = r.numbers("diameters", 0.0, kInf, true);
+    const auto diameters = r.numbers("diameters", 0.0, kInf, true);
     if (!r.has("fractions"))
       r.fail(r.key("fractions"), "is required: one fraction per diameter, summing to 1");
-    L.fractions = r.numbers("fractions", 0.0, 1.0, true);
-    if (L.fractions.size() != L.diameters.size())
-      r.fail(r.key("fractions"),
-             fmt::format("must have one entry per diameter ({} diameters, {} fractions)",
-                         L.diameters.size(), L.fractions.size()));
-    check_sum_to_one(r, "fractions", L.fractions);
-    std::vector<double> sorted = L.diameters;
-    std::sort(sorted.begin(), sorted.end());
-    for (std::size_t i = 1; i < sorted.size(); ++i)
-      if (sorted[i] == sorted[i - 1])
-        r.fail(r.key("diameters"),
-               fmt::format("each diameter may appear once ({} is given twice)", sorted[i]));
+    else if (const auto fractions = r.numbers("fractions", 0.0, 1.0, true)) {
+      L.fractions = *fractions;
+      if (diameters && L.fractions.size() != diameters->size())
+        r.fail(r.key("fractions"),
+               fmt::format("must have one entry per diameter ({} diameters, {} fractions)",
+                           diameters->size(), L.fractions.size()));
+      check_sum_to_one(r, "fractions", L.fractions);
+    }
+    if (diameters) {
+      L.diameters = *diameters;
+      std::vector<double> sorted = L.diameters;
+      std::sort(sorted.begin(), sorted.end());
+      for (std::size_t i = 1; i < sorted.size(); ++i)
+        if (sorted[i] == sorted[i - 1]) {
+          r.fail(r.key("diameters"),
+                 fmt::format("each diameter may appear once ({} is given twice)", sorted[i]));
+          break;
+        }
+      L.min = sorted.front();
+      L.max = sorted.back();
+    }
     if (!r.has("basis"))
       r.fail(r.key("basis"), "is required: number or volume (what the fractions count)");
-    L.by_volume = r.choice("basis", "", {"number", "volume"}) == "volume";
-    L.min = sorted.front();
-    L.max = sorted.back();
+    else
+      L.by_volume =
+          r.choice("basis", "", {"number", "volume"}) == std::optional<std::string>("volume");
   } else if (law == "uniform") {
     L.law = SizeLaw::kUniform;
     bounds();
@@ -324,7 +240,7 @@ SizeDistribution read_size_distribution(const YAML::Node& node, const std::strin
       L.sigma_ln = r.required("sigma_ln", 0.0, kInf, true);
     }
     bounds();
-    const double kept = truncation_mass(L);
+    const double kept = r.clean() ? truncation_mass(L) : 1.0;
     if (!(kept >= 1e-3))
       r.fail(
           r.key("min"),
@@ -332,15 +248,17 @@ SizeDistribution read_size_distribution(const YAML::Node& node, const std::strin
                       "it must keep at least 0.1 % (check {}, min and max)",
                       L.min, L.max, 100.0 * kept, law, normal ? "mean, std" : "median, sigma_ln"));
   }
+  const bool ok = r.clean();
   r.finish();
-  return L;
+  return ok ? std::optional<SizeDistribution>(L) : std::nullopt;
 }
 
 // coupling.sphere_kernel_scale (auto: scene/kernel_width_rule.hpp) and drag_kernel_scale,
 // then what the periodic width must hold: the spheres' halo reaches 2 H, with margin.
-void resolve_sphere_kernel(Scene& sc, bool kernel_auto, bool drag_kernel_given) {
+void resolve_sphere_kernel(Scene& sc, bool kernel_auto, bool drag_kernel_given,
+                           SceneProblems& problems) {
   auto fail = [&](const std::string& key, const std::string& what) {
-    throw SceneError(fmt::format("{}: key 'coupling.{}': {}", sc.source, key, what));
+    problems.add("coupling." + key, what);
   };
   if (kernel_auto) {
     const KernelWidthChoice c = choose_sphere_kernel_width(sc);
@@ -355,19 +273,21 @@ void resolve_sphere_kernel(Scene& sc, bool kernel_auto, bool drag_kernel_given) 
                                           sc.sphere_kernel_scale, sc.drag_kernel_scale));
   const double reach = 2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
   for (int d = 0; d < 2 && sc.fluid.enabled; ++d)
-    if (sc.box.length(d) < reach)
+    if (sc.box.length(d) < reach) {
       fail("sphere_kernel_scale",
            fmt::format("{} needs a periodic width >= 2.4 sphere_kernel_scale smoothing_factor "
                        "spacing = {} m (the spheres' kernel support with margin); domain.size "
                        "gives {} m",
                        sc.sphere_kernel_scale, reach, sc.box.length(d)));
+      break;
+    }
 }
 
 // fluid.resolution (a preset's, or the scene's): dx = spacing / resolution, rounded to
 // whole layers of the periodic widths. A preset's is dropped, with a note, where the box
 // would not hold the kernel, the column fewer than 3 layers, or a sphere would fill more
 // of its kernel than scene/scene_limits.hpp allows; the scene's own fails there instead.
-void resolve_resolution(Scene& sc, bool given, const std::string& file) {
+void resolve_resolution(Scene& sc, bool given, SceneProblems& problems) {
   FluidSpec& f = sc.fluid;
   const double old_dx = f.spacing, res = f.resolution;
   f.resolution = 1.0;
@@ -394,23 +314,24 @@ void resolve_resolution(Scene& sc, bool given, const std::string& file) {
     return;
   }
   if (given)
-    throw SceneError(fmt::format("{}: key 'fluid.resolution': {} gives dx = {:.6g} m, but {}", file,
-                                 res, dx, why));
-  sc.fidelity_note = fmt::format("the preset's resolution {} not applied: {}", res, why);
+    problems.add("fluid.resolution", fmt::format("{} gives dx = {:.6g} m, but {}", res, dx, why));
+  else
+    sc.fidelity_note = fmt::format("the preset's resolution {} not applied: {}", res, why);
 }
 
-Scene parse(const YAML::Node& root, const std::string& file) {
+Scene parse(const YAML::Node& root, SceneProblems& problems) {
   Scene sc;
-  sc.source = file;
+  sc.source = problems.file();
   bool kernel_auto = true, drag_kernel_given = false, stiffness_auto = true;
-  MapReader top(root, "", file);
+  MapReader top(root, "", problems);
   top.expect({"name", "description", "domain", "gravity", "fluid", "species", "particles",
               "contact", "drag", "coupling", "time", "startup", "output", "checkpoint", "watchdog",
               "insitu", "fidelity"});
   sc.name = top.text("name", "scene");
   sc.description = top.text("description", "");
   // the preset's values are the defaults of the keys it names (scene/fidelity.hpp)
-  sc.fidelity = top.choice("fidelity", "balanced", {"fast", "balanced", "accurate"});
+  sc.fidelity =
+      top.choice("fidelity", "balanced", {"fast", "balanced", "accurate"}).value_or("balanced");
   const FidelityPreset& preset = *find_fidelity_preset(sc.fidelity);
   sc.fluid.resolution = preset.resolution;
   sc.fluid.sound_speed_factor = preset.sound_speed_factor;
@@ -419,27 +340,34 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   sc.contact.max_overlap = preset.max_overlap;
   bool resolution_given = false;
 
+  // Checks against the box run only on a box the file gave without a problem (a default
+  // box in place of a bad one would give problems the file does not have).
+  bool box_ok = true;
   {
-    MapReader r(top.child("domain"), "domain", file);
+    MapReader r(top.child("domain"), "domain", problems);
     const auto size = r.vec3("size", {0.004, 0.004, 0.006});
-    for (int d = 0; d < 3; ++d)
-      if (size[d] <= 0) r.fail("domain.size", "all three lengths must be > 0 (m)");
+    box_ok = r.clean();
+    if (box_ok && !(size[0] > 0 && size[1] > 0 && size[2] > 0)) {
+      r.fail("domain.size", "all three lengths must be > 0 (m)");
+      box_ok = false;
+    }
     sc.box.lo = {0, 0, 0};
-    sc.box.hi = size;
+    sc.box.hi = box_ok ? size : std::array<double, 3>{0.004, 0.004, 0.006};
     sc.box.periodic = {true, true, false};
     r.finish();
   }
   sc.gravity = top.vec3("gravity", {0, 0, -9.81});
 
   {
-    MapReader r(top.child("fluid"), "fluid", file);
+    MapReader r(top.child("fluid"), "fluid", problems);
     FluidSpec& f = sc.fluid;
     f.enabled = r.boolean("enabled", f.enabled);
     f.density = r.number("density", f.density, 0, kInf, true);
     f.viscosity = r.number("viscosity", f.viscosity, 0, kInf, true);
     f.spacing = r.number("spacing", f.spacing, 0, kInf, true);
     f.smoothing_factor = r.number("smoothing_factor", f.smoothing_factor, 1.0, 3.0);
-    f.fill_height = r.number("fill_height", 0.0, 0.0, sc.box.length(2));
+    const bool lattice_ok = r.clean();  // spacing and smoothing_factor
+    f.fill_height = r.number("fill_height", 0.0, 0.0, box_ok ? sc.box.length(2) : kInf);
     f.expected_speed = r.number("expected_speed", 0.0, 0.0, kInf);
     f.sound_speed = r.number("sound_speed", 0.0, 0.0, kInf);
     f.sound_speed_factor = r.number("sound_speed_factor", f.sound_speed_factor, 5.0, 100.0);
@@ -450,52 +378,63 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     f.gamma = r.integer("gamma", f.gamma, 1, 7);
     const int min_layers = static_cast<int>(std::ceil(2.0 * f.smoothing_factor - 1e-9));
     f.wall_layers = r.integer("wall_layers", std::max(3, min_layers), min_layers, 8);
+    const bool fill_ok = r.clean();
     r.finish();
-    for (int d = 0; d < 2 && f.enabled; ++d) {  // fluid geometry (no fluid: nothing to fit)
+    for (int d = 0; d < 2 && f.enabled && box_ok && lattice_ok; ++d) {  // no fluid: nothing to fit
       const double halo = 2.4 * f.smoothing_factor * f.spacing;
-      if (sc.box.length(d) < 2.0 * halo)
+      if (sc.box.length(d) < 2.0 * halo) {
         r.fail("domain.size", fmt::format("the periodic width {} m must be >= 4.8 smoothing_factor "
                                           "spacing = {} m (twice the kernel support with margin)",
                                           sc.box.length(d), 2.0 * halo));
+        break;
+      }
       const double n = sc.box.length(d) / f.spacing;
-      if (std::abs(n - std::round(n)) > 1e-6)
+      if (std::abs(n - std::round(n)) > 1e-6) {
         r.fail("fluid.spacing",
                fmt::format("must divide the periodic width {} m into a whole number "
                            "of layers (got {} layers)",
                            sc.box.length(d), n));
+        break;
+      }
     }
-    if (f.enabled && sc.fill_height() < 3 * f.spacing)
+    if (f.enabled && box_ok && fill_ok && sc.fill_height() < 3 * f.spacing)
       r.fail("fluid.fill_height", "must hold at least 3 fluid layers");
   }
 
+  // Species with a problem are kept (so that groups naming them find them) but marked:
+  // the checks that need their sizes are skipped.
+  std::vector<bool> species_ok;
   {
     const YAML::Node list = top.child("species");
     if (list && !list.IsSequence())
       top.fail("species", "must be a list of {name, diameter, density}");
-    for (std::size_t s = 0; list && s < list.size(); ++s) {
-      MapReader r(list[s], fmt::format("species.{}", s), file);
+    for (std::size_t s = 0; list && list.IsSequence() && s < list.size(); ++s) {
+      MapReader r(list[s], fmt::format("species.{}", s), problems);
       SpeciesSpec sp;
       sp.name = r.text("name", "");
       if (sp.name.empty() || sp.name.find_first_of(":, ") != std::string::npos)
         r.fail(r.key("name"), "must be a non-empty name without ':', ',' or spaces");
-      if (sc.species_index(sp.name) >= 0)
+      else if (sc.species_index(sp.name) >= 0)
         r.fail(r.key("name"), "duplicate species name '" + sp.name + "'");
       const bool one_size = r.has("diameter"), law = r.has("size_distribution");
-      if (one_size && law)
+      if (one_size && law) {
         r.fail(r.key("size_distribution"),
                "give either 'diameter' (one size) or 'size_distribution', not both");
-      if (law) {
-        sp.size =
-            read_size_distribution(r.child("size_distribution"), r.key("size_distribution"), file);
-        sp.diameter = sauter_mean(sp.size);
+      } else if (law) {
+        const auto size = read_size_distribution(r.child("size_distribution"),
+                                                 r.key("size_distribution"), problems);
+        if (size) {
+          sp.size = *size;
+          sp.diameter = sauter_mean(sp.size);
+        }
+      } else if (!one_size) {
+        r.fail(r.key("diameter"), "is required: a number in (0, inf], or give 'size_distribution'");
       } else {
-        if (!one_size)
-          r.fail(r.key("diameter"),
-                 "is required: a number in (0, inf], or give 'size_distribution'");
         sp.diameter = r.required("diameter", 0.0, kInf, true);
         sp.size.min = sp.size.max = sp.diameter;
       }
       sp.density = r.required("density", 0.0, kInf, true);
+      species_ok.push_back(r.clean());
       r.finish();
       sc.species.push_back(sp);
     }
@@ -504,21 +443,29 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   {
     const YAML::Node list = top.child("particles");
     if (list && !list.IsSequence()) top.fail("particles", "must be a list of particle groups");
-    for (std::size_t gi = 0; list && gi < list.size(); ++gi) {
-      MapReader r(list[gi], fmt::format("particles.{}", gi), file);
+    for (std::size_t gi = 0; list && list.IsSequence() && gi < list.size(); ++gi) {
+      MapReader r(list[gi], fmt::format("particles.{}", gi), problems);
       ParticleGroupSpec g;
-      const std::string type = r.choice("type", "single", {"single", "lattice", "random"});
+      const std::optional<std::string> type_given =
+          r.choice("type", "single", {"single", "lattice", "random"});
+      if (!type_given) {  // which keys apply depends on the type
+        r.finish(false);
+        continue;
+      }
+      const std::string& type = *type_given;
       g.kind = type == "single"    ? ParticleGroupSpec::Kind::kSingle
                : type == "lattice" ? ParticleGroupSpec::Kind::kLattice
                                    : ParticleGroupSpec::Kind::kRandom;
+      // the group's species, known and read without a problem: their sizes can be checked
+      bool species_known = false;
       if (g.kind == ParticleGroupSpec::Kind::kRandom) {
-        read_mixture(r, sc, g);
+        species_known = read_mixture(r, sc, g);
       } else if (g.kind == ParticleGroupSpec::Kind::kLattice && r.has("species") &&
                  r.child("species").IsSequence()) {
         // a mixed lattice (bidisperse block, thesis §4.6): species dealt to the sites by quota,
         // shuffled
-        read_mixture(r, sc, g);
-        for (std::size_t i = 0; i < g.mixture.size(); ++i)
+        species_known = read_mixture(r, sc, g);
+        for (std::size_t i = 0; species_known && i < g.mixture.size(); ++i)
           if (!sc.species[sc.species_index(g.mixture[i])].monodisperse())
             r.fail(fmt::format("{}.{}", r.key("species"), i),
                    fmt::format("species '{}' has a size_distribution; a lattice needs species with "
@@ -526,41 +473,55 @@ Scene parse(const YAML::Node& root, const std::string& file) {
                                g.mixture[i]));
       } else {
         g.species = r.text("species", "");
-        const int s = sc.species_index(g.species);
-        if (s < 0)
-          r.fail(r.key("species"),
-                 fmt::format("'{}' is not a species listed under 'species'", g.species));
-        if (!sc.species[s].monodisperse())
+        species_known = known_species(r, sc, r.key("species"), g.species);
+        if (species_known && !sc.species[sc.species_index(g.species)].monodisperse())
           r.fail(r.key("species"),
                  fmt::format("species '{}' has a size_distribution; a {} group needs a species "
                              "with one diameter (type random takes a size law)",
                              g.species, type));
       }
-      const double radius = 0.5 * sc.species[sc.species_index(g.species)].diameter;
+      for (const std::string& name :
+           g.mixture.empty() ? std::vector<std::string>{g.species} : g.mixture)
+        species_known = species_known && species_ok[sc.species_index(name)];
+      const double radius =
+          species_known ? 0.5 * sc.species[sc.species_index(g.species)].diameter : 0.0;
       g.velocity = r.vec3("velocity", {0, 0, 0});
       g.velocity_jitter = r.number("velocity_jitter", 0.0, 0.0, kInf);
       g.velocity_seed = r.whole64("velocity_seed", 1, 0, std::numeric_limits<std::int64_t>::max());
       g.rigid = r.boolean("rigid", false);
       if (g.kind == ParticleGroupSpec::Kind::kLattice)
-        g.fcc = r.choice("lattice", "simple_cubic", {"simple_cubic", "fcc"}) == "fcc";
+        g.fcc = r.choice("lattice", "simple_cubic", {"simple_cubic", "fcc"}) ==
+                std::optional<std::string>("fcc");
       if (g.kind == ParticleGroupSpec::Kind::kSingle) {
+        const std::size_t before = problems.count();
         g.position =
             r.vec3("position", {0.5 * sc.box.hi[0], 0.5 * sc.box.hi[1], 0.5 * sc.box.hi[2]});
-        for (int d = 0; d < 3; ++d)
-          if (g.position[d] < sc.box.lo[d] || g.position[d] > sc.box.hi[d])
+        if (box_ok && problems.count() == before) {
+          bool inside = true;
+          for (int d = 0; d < 3; ++d)
+            inside = inside && g.position[d] >= sc.box.lo[d] && g.position[d] <= sc.box.hi[d];
+          if (!inside)
             r.fail(r.key("position"), "must lie inside domain.size");
-        if (g.position[2] < radius)
-          r.fail(r.key("position"), "the sphere would cut the bottom wall (z < radius)");
+          else if (g.position[2] < radius)
+            r.fail(r.key("position"), "the sphere would cut the bottom wall (z < radius)");
+        }
       } else {
+        const std::size_t before = problems.count();
         g.lo = r.vec3("min", sc.box.lo);
         g.hi = r.vec3("max", sc.box.hi);
+        bool below = false, above = false, empty = false;
         for (int d = 0; d < 3; ++d) {
-          if (g.lo[d] < sc.box.lo[d])
+          below = below || g.lo[d] < sc.box.lo[d];
+          above = above || g.hi[d] > sc.box.hi[d];
+          empty = empty || g.hi[d] <= g.lo[d];
+        }
+        if (box_ok && problems.count() == before) {
+          if (below)
             r.fail(r.key("min"), "region must satisfy 0 <= min < max <= domain.size (min < 0)");
-          if (g.hi[d] > sc.box.hi[d])
+          if (above)
             r.fail(r.key("max"),
                    "region must satisfy 0 <= min < max <= domain.size (max > domain.size)");
-          if (g.hi[d] <= g.lo[d])
+          if (empty)
             r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max <= min)");
         }
         if (g.kind == ParticleGroupSpec::Kind::kLattice) {
@@ -582,7 +543,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
   }
 
   {
-    MapReader r(top.child("contact"), "contact", file);
+    MapReader r(top.child("contact"), "contact", problems);
     r.choice("model", "linear_spring_dashpot", {"linear_spring_dashpot"});
     LinearSpringDashpot& n = sc.contact.normal;
     // a number, or auto (the default): resolved below once the fluid and drag are known
@@ -597,13 +558,16 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     n.restitution = has_e ? r.number("restitution", 1.0, 0.0, 1.0, true) : -1.0;
     n.clip_attraction = r.boolean("clip_attraction", false);
     sc.contact.skin = r.number("skin", sc.contact.skin, 0.0, 2.0);
+    bool tangential_known = true;
     {
       // Keys other than 'model' exist only for a model that has them (unknown otherwise).
-      MapReader t(r.child("tangential"), "contact.tangential", file);
+      MapReader t(r.child("tangential"), "contact.tangential", problems);
       TangentialParams& tp = sc.contact.tangential;
-      const std::string model = t.choice("model", "none", {"none", "linear_history"});
+      const std::optional<std::string> model =
+          t.choice("model", "none", {"none", "linear_history"});
       tp = TangentialParams{};
-      if (model == "linear_history") {
+      tangential_known = model.has_value();
+      if (model == std::optional<std::string>("linear_history")) {
         tp.model = TangentialParams::Model::kLinearHistory;
         tp.stiffness_ratio = t.number("stiffness_ratio", tp.stiffness_ratio, 0.0, 1.0, true);
         const bool has_gamma = t.has("damping"), has_et = t.has("restitution");
@@ -614,39 +578,42 @@ Scene parse(const YAML::Node& root, const std::string& file) {
         tp.restitution = has_et ? t.number("restitution", 1.0, 0.0, 1.0, true) : -1.0;
         tp.friction = t.required("friction", 0.0, kInf);
       }
-      t.finish();
+      t.finish(tangential_known);
     }
     {
-      MapReader t(r.child("rolling"), "contact.rolling", file);
+      MapReader t(r.child("rolling"), "contact.rolling", problems);
       RollingParams& rp = sc.contact.rolling;
-      const std::string model = t.choice("model", "none", {"none", "epsd"});
+      const std::optional<std::string> model = t.choice("model", "none", {"none", "epsd"});
       rp = RollingParams{};
-      if (model == "epsd") {
+      if (model == std::optional<std::string>("epsd")) {
         rp.model = RollingParams::Model::kEpsd;
         rp.friction = t.required("friction", 0.0, 1.0);
         rp.damping_ratio = t.number("damping_ratio", rp.damping_ratio, 0.0, kInf);
-        if (sc.contact.tangential.model == TangentialParams::Model::kNone)
+        if (tangential_known && sc.contact.tangential.model == TangentialParams::Model::kNone)
           t.fail("contact.rolling.model",
                  "'epsd' needs tangential friction (contact.tangential.model: "
                  "linear_history); the registered combinations of tangential + "
                  "rolling are none + none, linear_history + none, linear_history + epsd");
       }
-      t.finish();
+      t.finish(model.has_value());
     }
     r.finish();
   }
   {
-    MapReader r(top.child("drag"), "drag", file);
-    const std::string law = r.choice(
-        "law", "di_felice", {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)});
+    MapReader r(top.child("drag"), "drag", problems);
+    const std::string law =
+        r.choice("law", "di_felice",
+                 {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)})
+            .value_or("di_felice");
     drag::drag_law_from_name(law, sc.drag);
     r.finish();
   }
   {
-    MapReader r(top.child("coupling"), "coupling", file);
+    MapReader r(top.child("coupling"), "coupling", problems);
     sc.voidage_floor = r.number("voidage_floor", sc.voidage_floor, 0.05, 0.95);
-    const std::string sm = r.choice("voidage_smoothing", "single", {"single", "double"});
-    sc.double_smoothing.enabled = sm == "double";
+    const std::optional<std::string> sm =
+        r.choice("voidage_smoothing", "single", {"single", "double"});
+    sc.double_smoothing.enabled = sm == std::optional<std::string>("double");
     if (sc.double_smoothing.enabled) {
       sc.double_smoothing.h_over_d =
           r.number("big_h_over_d", sc.double_smoothing.h_over_d, 0.5, 5.0);
@@ -654,11 +621,12 @@ Scene parse(const YAML::Node& root, const std::string& file) {
         const YAML::Node n = r.child("big_species");
         if (!n.IsSequence() || n.size() == 0)
           r.fail(r.key("big_species"), "must be a non-empty list of species names");
-        for (std::size_t i = 0; i < n.size(); ++i) {
+        for (std::size_t i = 0; n.IsSequence() && i < n.size(); ++i) {
           const std::string k = fmt::format("{}.{}", r.key("big_species"), i);
-          if (!n[i].IsScalar() || sc.species_index(n[i].Scalar()) < 0)
+          if (!n[i].IsScalar())
             r.fail(k, "must be the name of a species listed under 'species'");
-          sc.double_smoothing.big_species.push_back(n[i].Scalar());
+          else if (known_species(r, sc, k, n[i].Scalar()))
+            sc.double_smoothing.big_species.push_back(n[i].Scalar());
         }
       } else {  // default: the species with the largest diameter
         std::size_t big = 0;
@@ -666,19 +634,23 @@ Scene parse(const YAML::Node& root, const std::string& file) {
           if (sc.species[i].d_max() > sc.species[big].d_max()) big = i;
         if (!sc.species.empty()) sc.double_smoothing.big_species = {sc.species[big].name};
       }
-    } else {
+    } else if (sm) {  // (a bad voidage_smoothing leaves it open whether these apply)
       for (const char* k : {"big_species", "big_h_over_d"})
         if (r.has(k)) r.fail(r.key(k), "applies only with voidage_smoothing: double");
+    } else {
+      r.has("big_species");
+      r.has("big_h_over_d");
     }
     // default: variational (conserves energy where the voidage varies), interpolated with
     // the double smoothing (whose voidage gradient the variational form lacks) or no fluid
     const bool variational_applies = sc.fluid.enabled && !sc.double_smoothing.enabled;
-    const std::string pc =
+    const std::optional<std::string> pc =
         r.choice("pressure_coupling", variational_applies ? "variational" : "interpolated",
                  {"interpolated", "variational"});
-    sc.pressure_coupling =
-        pc == "variational" ? PressureCoupling::kVariational : PressureCoupling::kInterpolated;
-    if (sc.pressure_coupling == PressureCoupling::kVariational && sc.double_smoothing.enabled)
+    sc.pressure_coupling = pc.value_or("interpolated") == "variational"
+                               ? PressureCoupling::kVariational
+                               : PressureCoupling::kInterpolated;
+    if (sm && sc.pressure_coupling == PressureCoupling::kVariational && sc.double_smoothing.enabled)
       r.fail(r.key("pressure_coupling"),
              "variational needs voidage_smoothing: single (the gradient of the "
              "double-smoothed voidage is not implemented); use interpolated");
@@ -686,10 +658,10 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     const bool split_applies = sc.pressure_coupling == PressureCoupling::kVariational &&
                                sc.gravity[0] == 0.0 && sc.gravity[1] == 0.0 && sc.gravity[2] < 0.0;
     sc.hydrostatic_split = r.boolean("hydrostatic_split", split_applies);
-    if (sc.hydrostatic_split && sc.pressure_coupling != PressureCoupling::kVariational)
+    if (pc && sc.hydrostatic_split && sc.pressure_coupling != PressureCoupling::kVariational)
       r.fail(r.key("hydrostatic_split"), "true needs pressure_coupling: variational");
-    if (sc.hydrostatic_split &&
-        (sc.gravity[0] != 0.0 || sc.gravity[1] != 0.0 || sc.gravity[2] >= 0.0))
+    else if (sc.hydrostatic_split &&
+             (sc.gravity[0] != 0.0 || sc.gravity[1] != 0.0 || sc.gravity[2] >= 0.0))
       r.fail(r.key("hydrostatic_split"),
              "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
     // a number, or auto (the default): resolved below once c0 is known
@@ -702,7 +674,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     r.finish();
   }
   {
-    MapReader r(top.child("time"), "time", file);
+    MapReader r(top.child("time"), "time", problems);
     sc.time.end = r.number("end", sc.time.end, 0.0, kInf, true);
     sc.time.cfl = r.number("cfl", sc.time.cfl, 0.0, 1.0, true);
     sc.time.dem_steps_per_contact =
@@ -711,25 +683,25 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     r.finish();
   }
   {
-    MapReader r(top.child("startup"), "startup", file);
+    MapReader r(top.child("startup"), "startup", problems);
     sc.startup.relax_steps = r.integer("relax_steps", sc.startup.relax_steps, 0, 1000000);
     sc.startup.damping = r.number("damping", sc.startup.damping, 0.0, 1.0, false, true);
     r.finish();
   }
   {
-    MapReader r(top.child("output"), "output", file);
+    MapReader r(top.child("output"), "output", problems);
     sc.output.log_interval = r.number("log_interval", 0.0, 0.0, kInf);
     sc.output.progress_interval =
         r.number("progress_interval", sc.output.progress_interval, 0.0, kInf);
     {
-      MapReader v(r.child("vtk"), "output.vtk", file);
+      MapReader v(r.child("vtk"), "output.vtk", problems);
       sc.output.vtk_every = v.number("every", 0.0, 0.0, kInf);
       v.finish();
     }
     r.finish();
   }
   {
-    MapReader r(top.child("checkpoint"), "checkpoint", file);
+    MapReader r(top.child("checkpoint"), "checkpoint", problems);
     CheckpointSpec& c = sc.checkpoint;
     c.every = r.number("every", c.every, 0.0, kInf);
     c.wall_interval = r.number("wall_interval", c.wall_interval, 0.0, kInf);
@@ -738,7 +710,7 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     r.finish();
   }
   {
-    MapReader r(top.child("watchdog"), "watchdog", file);
+    MapReader r(top.child("watchdog"), "watchdog", problems);
     WatchdogSpec& w = sc.watchdog;
     w.enabled = r.boolean("enabled", w.enabled);
     w.density_error = r.number("density_error", w.density_error, 0.0, kInf, true);
@@ -747,23 +719,23 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     r.finish();
   }
   {
-    MapReader r(top.child("insitu"), "insitu", file);
+    MapReader r(top.child("insitu"), "insitu", problems);
     InSituSpec& in = sc.insitu;
     in.enabled = r.boolean("enabled", in.enabled);
     in.every = r.number("every", 0.0, 0.0, kInf);
     if (r.has("pipelines")) {
       const YAML::Node list = r.child("pipelines");
       if (!list.IsSequence()) r.fail("insitu.pipelines", "must be a list of pipeline names");
-      in.pipelines.clear();
-      for (std::size_t k = 0; k < list.size(); ++k) {
+      std::vector<std::string> names;
+      for (std::size_t k = 0; list.IsSequence() && k < list.size(); ++k) {
         const std::string name = list[k].IsScalar() ? list[k].Scalar() : "";
-        if (std::find(std::begin(kPipelineNames), std::end(kPipelineNames), name) ==
-            std::end(kPipelineNames))
-          r.fail(
-              fmt::format("insitu.pipelines.{}", k),
-              fmt::format("must be one of: {} (got '{}')", fmt::join(kPipelineNames, ", "), name));
-        in.pipelines.push_back(name);
+        if (std::find(kPipelineNames.begin(), kPipelineNames.end(), name) == kPipelineNames.end())
+          r.fail(fmt::format("insitu.pipelines.{}", k),
+                 fmt::format("must be one of: {} (got '{}'){}", fmt::join(kPipelineNames, ", "),
+                             name, did_you_mean(name, kPipelineNames)));
+        names.push_back(name);
       }
+      if (list.IsSequence()) in.pipelines = names;
     }
     in.snapshot_every = r.integer("snapshot_every", in.snapshot_every, 1, 1000000);
     in.grid_spacing = r.number("grid_spacing", 0.0, 0.0, kInf);
@@ -771,6 +743,8 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     r.finish();
   }
   top.finish();
+  // The values below are resolved from the ones above: only from a scene without problems.
+  problems.throw_if_any();
 
   // Resolve the automatic values, so case.yaml records what actually ran.
   const double g = std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
@@ -785,16 +759,34 @@ Scene parse(const YAML::Node& root, const std::string& file) {
     }
     sc.fluid.expected_speed = u;
   }
-  if (sc.fluid.resolution != 1.0) resolve_resolution(sc, resolution_given, file);
+  if (sc.fluid.resolution != 1.0) resolve_resolution(sc, resolution_given, problems);
   if (sc.fluid.sound_speed <= 0) {
     const double um = std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.fill_height()));
     sc.fluid.sound_speed = sc.fluid.sound_speed_factor * std::max(um, 1e-6);
   }
-  resolve_sphere_kernel(sc, kernel_auto, drag_kernel_given);
+  // The automatic values come from the file's own, and extreme ones (a density of 1e300)
+  // leave them infinite or NaN: no run can use that, and case.yaml cannot record it.
+  auto finite = [&](const char* key, double v, const char* from) {
+    if (!std::isfinite(v))
+      problems.add(key, fmt::format("its automatic value is {} (from {}); give it, or bring those "
+                                    "into a physical range",
+                                    v, from));
+    return std::isfinite(v);
+  };
+  if (finite("fluid.expected_speed", sc.fluid.expected_speed,
+             "the species' diameters and densities, fluid.density, fluid.viscosity, gravity and "
+             "drag.law"))
+    finite("fluid.sound_speed", sc.fluid.sound_speed,
+           "fluid.expected_speed, fluid.sound_speed_factor, gravity and the fill height");
+  problems.throw_if_any();
+  resolve_sphere_kernel(sc, kernel_auto, drag_kernel_given, problems);
+  problems.throw_if_any();
   if (stiffness_auto) {
     const StiffnessChoice c = choose_contact_stiffness(sc);
     sc.contact.normal.k = c.k;
     sc.contact.stiffness_reason = c.reason;
+    finite("contact.stiffness", c.k,
+           "contact.max_overlap, the species, the groups' speeds, gravity and the fluid");
   }
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
@@ -810,7 +802,10 @@ Scene parse(const YAML::Node& root, const std::string& file) {
           sp.diameter, sp.density, sc.fluid.density, sc.fluid.viscosity, g, grp.voidage);
       break;
     }
+    finite("insitu.reference_velocity", sc.insitu.reference_velocity,
+           "the first block's or suspension's species and voidage, and the fluid");
   }
+  problems.throw_if_any();
   return sc;
 }
 
@@ -825,8 +820,10 @@ Scene load_scene_text(const std::string& yaml, const std::string& source_name,
     throw SceneError(fmt::format("{}: not valid YAML: {}", source_name, e.what()));
   }
   if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
-  for (const auto& o : overrides) apply_override(root, o, source_name);
-  return parse(root, source_name);
+  SceneProblems problems(source_name);
+  if (!root.IsMap()) problems.stop("", "must be a map of keys");  // nothing to read on
+  for (const auto& o : overrides) apply_override(root, o, problems);
+  return parse(root, problems);
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
