@@ -135,6 +135,29 @@ TEST(Watchdog, TheVoidageFloorHoldingTheFluid) {
   EXPECT_TRUE(has(alarm->cause, "coupling.voidage_floor")) << alarm->cause;
 }
 
+// No scene tried reached the Omega clamp (blow-ups at CFL 0.9-4, beds with d = dx, pairs of
+// fluid particles collapsed onto each other): a step's state does it here, the top layers
+// of a column expanded tenfold below the free surface (h grows by 10^(1/3) and the
+// kernel reaches past the surface), with the density bound off so that the clamp speaks.
+TEST(Watchdog, TheOmegaClampHoldingTheFluid) {
+  const Scene sc = load_scene_text(
+      "name: column\ndomain: {size: [0.0016, 0.0016, 0.0016]}\n"
+      "fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4}\n"
+      "startup: {relax_steps: 0}\nwatchdog: {density_error: 1e300}\n",
+      "t");
+  Simulation sim(sc);
+  FluidParticles& f = sim.fluid();
+  for (std::size_t a = 0; a < f.n_owned; ++a)
+    if (f.kind[a] == kFluid && f.z[a] > 0.0013) f.rho[a] *= 0.1;
+  sim.refresh();
+  ASSERT_GT(sim.omega_bounded(), 0.01 * sim.fluid_count());
+  const auto alarm = watchdog_check(sim, sc.watchdog);
+  ASSERT_TRUE(alarm);
+  EXPECT_TRUE(has(alarm->quantity, "Omega term clamped")) << alarm->quantity;
+  EXPECT_GT(alarm->z, 0.0013);
+  EXPECT_TRUE(has(alarm->cause, "h varies faster than the kernel resolves")) << alarm->cause;
+}
+
 TEST(Watchdog, TheRunnerStopsWithTheDumpAndTheLastCheckpoint) {
   namespace fs = std::filesystem;
   const std::string dir = (fs::temp_directory_path() / "sphdem_watchdog_test").string();
