@@ -18,39 +18,27 @@ constexpr double kFewSubSteps = 8.0;
 // The largest CFL number of the presets and the validation (scene/fidelity.hpp).
 constexpr double kLargestTestedCfl = 0.3;
 
+// The alarm of particle i of `particles` (an SPH particle or a sphere, `kind` its name).
+template <class Particles>
+WatchdogAlarm alarm_at(const Particles& p, std::size_t i, bool sphere, std::string kind,
+                       const std::string& quantity, double value, double limit,
+                       const std::string& cause) {
+  return WatchdogAlarm{quantity, sphere, i,     p.id[i], std::move(kind), p.x[i], p.y[i],
+                       p.z[i],   value,  limit, cause};
+}
+
 WatchdogAlarm fluid_alarm(const Simulation& sim, std::size_t a, const std::string& quantity,
                           double value, double limit, const std::string& cause) {
   const FluidParticles& f = sim.fluid();
-  WatchdogAlarm w;
-  w.quantity = quantity;
-  w.index = a;
-  w.id = f.id[a];
-  w.kind = f.kind[a] == kWall ? "wall" : "fluid";
-  w.x = f.x[a];
-  w.y = f.y[a];
-  w.z = f.z[a];
-  w.value = value;
-  w.limit = limit;
-  w.cause = cause;
-  return w;
+  return alarm_at(f, a, false, f.kind[a] == kWall ? "wall" : "fluid", quantity, value, limit,
+                  cause);
 }
 
 WatchdogAlarm sphere_alarm(const Simulation& sim, std::size_t j, const std::string& quantity,
                            double value, double limit, const std::string& cause) {
   const DemParticles& s = sim.spheres();
-  WatchdogAlarm w;
-  w.quantity = quantity;
-  w.sphere = true;
-  w.index = j;
-  w.id = s.id[j];
-  w.kind = sim.scene().species[s.species[j]].name;
-  w.x = s.x[j];
-  w.y = s.y[j];
-  w.z = s.z[j];
-  w.value = value;
-  w.limit = limit;
-  w.cause = cause;
-  return w;
+  return alarm_at(s, j, true, sim.scene().species[s.species[j]].name, quantity, value, limit,
+                  cause);
 }
 
 // Past the periodic faces by more than half a box: positions are wrapped into the box
