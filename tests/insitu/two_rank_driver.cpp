@@ -44,7 +44,7 @@ constexpr unsigned kSeed = 20240607u;
 constexpr int kSpheres = 400;
 constexpr int kBand = 370;  // spheres [0, kBand) in the dense band, the rest spread out
 constexpr double kLx = 0.0016, kLy = 0.0016, kLz = 0.004;
-constexpr double kBandLo = 0.0016, kBandHi = 0.0024;   // dense band (m)
+constexpr double kBandLo = 0.0016, kBandHi = 0.0024;      // dense band (m)
 constexpr double kSpreadLo = 0.0005, kSpreadHi = 0.0035;  // sparse spheres (m)
 constexpr double kDrop = 2e-4;  // per frame: z -= kDrop * (1 + 0.1 * species)
 constexpr double kDiameter[2] = {1.0e-4, 1.6e-4};
@@ -68,7 +68,8 @@ insitu:
 
 // numpy's random_sample: 53-bit uniform in [0, 1) from two raw 32-bit outputs.
 double res53(std::mt19937& g) {
-  const std::uint32_t a = static_cast<std::uint32_t>(g()) >> 5, b = static_cast<std::uint32_t>(g()) >> 6;
+  const std::uint32_t a = static_cast<std::uint32_t>(g()) >> 5,
+                      b = static_cast<std::uint32_t>(g()) >> 6;
   return (a * 67108864.0 + b) / 9007199254740992.0;
 }
 
@@ -85,7 +86,8 @@ DemParticles make_spheres() {
     s.species[i] = static_cast<std::uint16_t>(sp);
     s.x[i] = kLx * ux;
     s.y[i] = kLy * uy;
-    s.z[i] = i < kBand ? kBandLo + (kBandHi - kBandLo) * uz : kSpreadLo + (kSpreadHi - kSpreadLo) * uz;
+    s.z[i] =
+        i < kBand ? kBandLo + (kBandHi - kBandLo) * uz : kSpreadLo + (kSpreadHi - kSpreadLo) * uz;
     s.radius[i] = 0.5 * kDiameter[sp];
     s.mass[i] = kDensity[sp] * s.volume(i);
     s.vz[i] = -kDrop * (1.0 + 0.1 * sp) / 1e-3;
@@ -101,7 +103,8 @@ DemParticles make_spheres() {
 // Fluid lattice at the scene spacing, cell-centred, filling the box.
 FluidParticles make_fluid(const Scene& sc) {
   const double dx = sc.fluid.spacing, h = sc.fluid.smoothing_factor * dx;
-  const int nx = static_cast<int>(std::lround(kLx / dx)), ny = static_cast<int>(std::lround(kLy / dx)),
+  const int nx = static_cast<int>(std::lround(kLx / dx)),
+            ny = static_cast<int>(std::lround(kLy / dx)),
             nz = static_cast<int>(std::lround(kLz / dx));
   FluidParticles f;
   f.resize(static_cast<std::size_t>(nx) * ny * nz);
@@ -131,7 +134,8 @@ FluidParticles make_fluid(const Scene& sc) {
 template <class P>
 P owned_part(const P& all, int rank, int nranks) {
   std::vector<std::size_t> idx;
-  for (std::size_t i = static_cast<std::size_t>(rank); i < all.size(); i += static_cast<std::size_t>(nranks))
+  for (std::size_t i = static_cast<std::size_t>(rank); i < all.size();
+       i += static_cast<std::size_t>(nranks))
     idx.push_back(i);
   P out;
   out.resize(idx.size());
@@ -155,7 +159,8 @@ DemParticles with_periodic_images(const DemParticles& s) {
   out.resize(9 * n);
   std::size_t k = 0;
   // the unshifted copy first, so indices [0, n) are the spheres themselves
-  const int shifts[9][2] = {{0, 0}, {-1, -1}, {-1, 0}, {-1, 1}, {0, -1}, {0, 1}, {1, -1}, {1, 0}, {1, 1}};
+  const int shifts[9][2] = {{0, 0}, {-1, -1}, {-1, 0}, {-1, 1}, {0, -1},
+                            {0, 1}, {1, -1},  {1, 0},  {1, 1}};
   for (const auto& sh : shifts)
     for (std::size_t i = 0; i < n; ++i, ++k) {
       out.x[k] = s.x[i] + sh[0] * kLx;
@@ -191,8 +196,8 @@ int run(int argc, char** argv) {
 
   const Scene scene = load_scene_text(kSceneYaml, "two_rank_driver");
   const double h = scene.fluid.smoothing_factor * scene.fluid.spacing;
-  const GridSpec whole =
-      column_voidage_grid(scene.box.length(0), scene.box.length(1), scene.fill_height(), scene.insitu.grid_spacing, h);
+  const GridSpec whole = column_voidage_grid(scene.box.length(0), scene.box.length(1),
+                                             scene.fill_height(), scene.insitu.grid_spacing, h);
 
   // this rank's contiguous slab of z nodes
   GridSpec piece = whole;
@@ -218,13 +223,15 @@ int run(int argc, char** argv) {
     InSitu insitu(scene, io);
     for (int frame = 0; frame < 3; ++frame) {
       if (frame > 0)
-        for (std::size_t i = 0; i < all.size(); ++i) all.z[i] -= kDrop * (1.0 + 0.1 * all.species[i]);
+        for (std::size_t i = 0; i < all.size(); ++i)
+          all.z[i] -= kDrop * (1.0 + 0.1 * all.species[i]);
 
       spheres = owned_part(all, rank, nranks);
       owned_spheres = spheres.n_owned;
       const DemParticles images = with_periodic_images(all);
       CellList cells;
-      cells.build(images.x.data(), images.y.data(), images.z.data(), images.size(), kernel::kSupport * h);
+      cells.build(images.x.data(), images.y.data(), images.z.data(), images.size(),
+                  kernel::kSupport * h);
       voidage = compute_voidage_grid(images, cells, piece, h);
 
       InSituFrame fr;
@@ -247,13 +254,16 @@ int run(int argc, char** argv) {
       known.push_back({fr.time, mz[0] / m[0], mz[1] / m[1], (mz[0] + mz[1]) / (m[0] + m[1]), vol});
     }
   }  // InSitu finalized here: pipelines flush
-  if (rank == 0) write_known_com((std::filesystem::path(argv[1]) / "known_com.csv").string(), known);
-  std::cout << "two_rank_driver: rank " << rank << " owned " << owned_spheres << " spheres, " << fluid.n_owned
-            << " fluid particles, z nodes " << piece.extent[4] << ".." << piece.extent[5] << std::endl;
+  if (rank == 0)
+    write_known_com((std::filesystem::path(argv[1]) / "known_com.csv").string(), known);
+  std::cout << "two_rank_driver: rank " << rank << " owned " << owned_spheres << " spheres, "
+            << fluid.n_owned << " fluid particles, z nodes " << piece.extent[4] << ".."
+            << piece.extent[5] << std::endl;
   MPI_Barrier(MPI_COMM_WORLD);
   if (rank == 0)
-    std::cout << "two_rank_driver: " << nranks << " rank(s), " << kSpheres << " spheres, " << fluid_all.size()
-              << " fluid particles, grid z nodes " << whole.extent[4] << ".." << whole.extent[5] << "\n";
+    std::cout << "two_rank_driver: " << nranks << " rank(s), " << kSpheres << " spheres, "
+              << fluid_all.size() << " fluid particles, grid z nodes " << whole.extent[4] << ".."
+              << whole.extent[5] << "\n";
   return 0;
 }
 
