@@ -10,6 +10,7 @@
 #include <vtkImageData.h>
 #include <vtkMPIController.h>
 #include <vtkNew.h>
+#include <vtkObject.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -35,6 +36,7 @@ struct InSitu::Impl {
   vtkSmartPointer<vtkMPIController> controller;
   vtkSmartPointer<vtkCPProcessor> processor;
   SphereCopies sphere_copies;  // derived sphere fields (diameter, density, species)
+  bool executed = false;       // a frame went through Catalyst
 
   void add_field_data(vtkDataObject* d, const InSituFrame& f) const {
     vtkFieldData* fd = d->GetFieldData();
@@ -172,7 +174,17 @@ void InSitu::execute(const InSituFrame& f) {
   vtkCPInputDataDescription* vd = dd->GetInputDescriptionByName("voidage");
   vd->SetGrid(grid);
   vd->SetWholeExtent(const_cast<int*>(f.whole_extent.data()));
+  // ParaView 5.11's legacy Catalyst imports each script at the first execution, which
+  // gives every producer the frame's time, then gives it the same time again and warns
+  // "New time step is not after last time step" once per producer (5.12 accepts the
+  // repeat: ParaView commit 704c641); the snapshot script's colour maps, set up at import
+  // before any frame was rendered, warn "Could not determine array range". VTK's warnings
+  // are off for that one call only.
+  const bool first = !m.executed;
+  if (first) vtkObject::GlobalWarningDisplayOff();
   m.processor->CoProcess(dd);
+  if (first) vtkObject::GlobalWarningDisplayOn();
+  m.executed = true;
 }
 
 }  // namespace sphdem

@@ -245,6 +245,11 @@ class EndToEndTest(unittest.TestCase):
                          "sphdem did not get a display: snapshots were skipped")
         print("run time %.1f s" % self.wall, file=sys.stderr)
 
+    def test_no_warnings_from_vtk(self):
+        out = self.proc.stdout + self.proc.stderr
+        vtk = [l for l in out.splitlines() if "Warning:" in l or "ERR|" in l or "WARN|" in l]
+        self.assertEqual(vtk, [], "VTK printed:\n" + "\n".join(vtk[:10]))
+
     def test_case_yaml_has_the_overrides_and_the_scene_counts(self):
         case = self.case()
         self.assertAlmostEqual(case["time"]["end"], T_END, delta=1e-15)
