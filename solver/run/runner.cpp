@@ -444,8 +444,10 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
     s += fmt::format(
         "sound speed      c0 = {:.4g} m/s: Mach u_m/c0 = {:.3g}, expected density error {:.2g} % "
         "(Ma^2 = {:.2g} %, the column's weight g H/c0^2 = {:.2g} %; limit 1 %, log.csv "
-        "max_density_error)\n",
-        c.c0, c.mach, 100 * c.expected_density_error(), 100 * c.flow, 100 * c.hydrostatic);
+        "max_density_error); the compression buoys the lightest species {:.2g} % more than its "
+        "buoyant weight (automatic c0: <= {} %)\n",
+        c.c0, c.mach, 100 * c.expected_density_error(), 100 * c.flow, 100 * c.hydrostatic,
+        100 * c.buoyancy, 100 * kBuoyancyErrorTarget);
   }
   s += fmt::format("drag law         {}\n", drag::drag_law_name(sc.drag));
   s += fmt::format(

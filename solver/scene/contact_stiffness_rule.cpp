@@ -43,8 +43,7 @@ double buoyant_density(const Scene& sc, const ParticleGroupSpec& g, double rho_f
 }  // namespace
 
 StiffnessChoice choose_contact_stiffness(const Scene& sc) {
-  const double g = std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
-                             sc.gravity[2] * sc.gravity[2]);
+  const double g = sc.gravity_magnitude();
   const double f = sc.contact.max_overlap;
   const bool fluid = sc.fluid.enabled;
   const double rho_f = fluid ? sc.fluid.density : 0.0;

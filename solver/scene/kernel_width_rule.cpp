@@ -24,8 +24,7 @@ double terminal_speed(const drag::DragLaw& law, double d, double rho_p, double r
 }
 
 double extra_drag_ratio(const Scene& sc) {
-  const double g = std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
-                             sc.gravity[2] * sc.gravity[2]);
+  const double g = sc.gravity_magnitude();
   const FluidSpec& f = sc.fluid;
   if (!f.enabled || g <= 0.0) return 0.0;
   const double h = f.smoothing_factor * f.spacing, h4 = h * h * h * h;

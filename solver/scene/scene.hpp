@@ -2,6 +2,7 @@
 // A scene: every parameter of a run, in SI units, as read from cases/*.yaml.
 // Plain data; the loader (scene_loader.cpp) fills and validates it.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -23,7 +24,7 @@ struct FluidSpec {
   double smoothing_factor = 1.5;     // sigma in h = sigma (m/rho)^(1/3), eq. 2.65
   double fill_height = 0.0;          // free-surface height (m); 0 = the box height
   double expected_speed = 0.0;       // u_m (m/s) for B, eq. 2.64; 0 = largest terminal speed
-  double sound_speed = 0.0;          // c0 (m/s); 0 = factor max(u_m, sqrt(2 g H)) (physics.md §1)
+  double sound_speed = 0.0;          // c0 (m/s); 0 = auto (scene_loader.cpp, physics.md §1)
   double sound_speed_factor = 10.0;  // that factor (scene/fidelity.hpp)
   double resolution = 1.0;  // layers per `spacing`: dx = spacing / resolution (resolved to 1)
   double alpha_artificial =
@@ -199,6 +200,9 @@ struct Scene {
   InSituSpec insitu;
 
   double fill_height() const { return fluid.fill_height > 0 ? fluid.fill_height : box.length(2); }
+  double gravity_magnitude() const {
+    return std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);
+  }
   int species_index(const std::string& name) const;
 };
 

@@ -16,11 +16,6 @@ namespace {
 constexpr double kStokesReynoldsMax = 2.0;
 constexpr double kWeaklyCompressibleLimit = 0.01;
 constexpr double kOverlapLimit = 0.1;  // of d
-
-double gravity_magnitude(const Scene& sc) {
-  return std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
-                   sc.gravity[2] * sc.gravity[2]);
-}
 }  // namespace
 
 double sphere_kernel_share(double d, double h) {
@@ -29,7 +24,7 @@ double sphere_kernel_share(double d, double h) {
 
 std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
   std::vector<LimitBreach> out;
-  const double g = gravity_magnitude(sc);
+  const double g = sc.gravity_magnitude();
   const FluidSpec& fl = sc.fluid;
   for (std::size_t k = 0; k < sc.species.size(); ++k) {
     const SpeciesSpec& sp = sc.species[k];
@@ -85,6 +80,16 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
                        "fluid.sound_speed to >= {:.3g} m/s (or 0 for the automatic c0)",
                        c.c0, 100 * c.expected_density_error(), c.mach, 100 * c.hydrostatic,
                        c.c0 * std::sqrt(c.expected_density_error() / kWeaklyCompressibleLimit))});
+    if (c.buoyancy > kBuoyancyErrorLimit * (1.0 + 1e-9))
+      out.push_back(
+          {"fluid.sound_speed",
+           fmt::format("c0 = {} m/s compresses the fluid at the base by g H/c0^2 = {:.2g} %, which "
+                       "buoys the lightest species {:.2g} % more than its buoyant weight "
+                       "(rho_p - rho_f) g V: its settling speed would be that much too slow, "
+                       "past the limit of {} %; raise fluid.sound_speed to >= {:.3g} m/s (or 0 "
+                       "for the automatic c0)",
+                       c.c0, 100 * c.hydrostatic, 100 * c.buoyancy, 100 * kBuoyancyErrorLimit,
+                       buoyancy_sound_speed(sc, kBuoyancyErrorLimit))});
   }
   // (blocks moving rigidly, thesis 4.5, have no contacts to bound)
   const bool all_rigid = std::all_of(sc.particles.begin(), sc.particles.end(),

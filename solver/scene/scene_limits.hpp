@@ -12,7 +12,8 @@
 //  - spheres no lighter than the fluid under gravity: they would rise through the
 //    free surface, above which the model has no fluid;
 //  - the sound speed's expected density error (scene/sound_speed_rule.hpp) within the
-//    weakly compressible limit, 1 %;
+//    weakly compressible limit, 1 %, and the compression's share of the lightest
+//    species' buoyant weight within kBuoyancyErrorLimit (2 %);
 //  - the spring's expected largest overlap (scene/contact_stiffness_rule.hpp) within
 //    10 % of d, past which a soft-sphere contact no longer models two touching spheres
 //    (not for blocks whose spheres all move rigidly).

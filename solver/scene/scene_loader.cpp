@@ -22,6 +22,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/scene_problems.hpp"
+#include "scene/sound_speed_rule.hpp"
 
 namespace sphdem {
 
@@ -747,8 +748,7 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
   problems.throw_if_any();
 
   // Resolve the automatic values, so case.yaml records what actually ran.
-  const double g = std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
-                             sc.gravity[2] * sc.gravity[2]);
+  const double g = sc.gravity_magnitude();
   if (sc.fluid.fill_height <= 0) sc.fluid.fill_height = sc.box.length(2);
   if (sc.fluid.expected_speed <= 0) {
     double u = 0.0;
@@ -760,9 +760,10 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
     sc.fluid.expected_speed = u;
   }
   if (sc.fluid.resolution != 1.0) resolve_resolution(sc, resolution_given, problems);
-  if (sc.fluid.sound_speed <= 0) {
+  if (sc.fluid.sound_speed <= 0) {  // f max(u_m, sqrt(2 g H)), and the buoyancy bound
     const double um = std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.fill_height()));
-    sc.fluid.sound_speed = sc.fluid.sound_speed_factor * std::max(um, 1e-6);
+    sc.fluid.sound_speed =
+        std::max(sc.fluid.sound_speed_factor * std::max(um, 1e-6), buoyancy_sound_speed(sc));
   }
   // The automatic values come from the file's own, and extreme ones (a density of 1e300)
   // leave them infinite or NaN: no run can use that, and case.yaml cannot record it.

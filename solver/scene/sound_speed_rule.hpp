@@ -5,6 +5,13 @@
 // at the base of a column of height H (Delta P = rho0 g H = rho0 c0^2 Delta rho / rho0).
 // `sphdem check` prints both and the larger as the expected density error; a run's
 // log.csv max_density_error is the measured one (weakly compressible limit: 1 %).
+//
+// The compressed fluid also buoys a sphere more: the pressure gradient a sphere feels is
+// rho g with the fluid's own (compressed) density, so its buoyant weight (rho_p - rho_f) g V
+// falls short by rho_f g H / c0^2 at the base, relative to (rho_p - rho_f). Near neutral
+// buoyancy that share is the settling speed's error (Stokes: v ~ rho_p - rho_f): at
+// rho_p/rho_f = 1.05 twenty times the density error. The automatic c0 keeps it under
+// kBuoyancyErrorTarget for the lightest species (scene_loader.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -12,22 +19,39 @@
 
 namespace sphdem {
 
+inline constexpr double kBuoyancyErrorTarget = 0.01;  // the automatic c0's share
+inline constexpr double kBuoyancyErrorLimit = 0.02;   // beyond it `check` refuses a given c0
+
 struct SoundSpeedReport {
   double c0 = 0, mach = 0;
   double flow = 0;         // Ma^2
   double hydrostatic = 0;  // g H / c0^2
+  double buoyancy = 0;     // g H / c0^2 rho_f / (rho_p - rho_f) of the lightest species
   double expected_density_error() const { return std::max(flow, hydrostatic); }
 };
 
+// rho_f / (rho_p - rho_f) of the species closest to neutral buoyancy (0: no heavier species)
+inline double neutral_buoyancy_factor(const Scene& sc) {
+  double f = 0;
+  for (const SpeciesSpec& sp : sc.species)
+    if (sp.density > sc.fluid.density)
+      f = std::max(f, sc.fluid.density / (sp.density - sc.fluid.density));
+  return f;
+}
+
+// The smallest c0 whose compression error on the buoyant weight stays within `share`.
+inline double buoyancy_sound_speed(const Scene& sc, double share = kBuoyancyErrorTarget) {
+  return std::sqrt(sc.gravity_magnitude() * sc.fill_height() * neutral_buoyancy_factor(sc) / share);
+}
+
 inline SoundSpeedReport sound_speed_report(const Scene& sc) {
   SoundSpeedReport r;
-  const double g = std::sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] +
-                             sc.gravity[2] * sc.gravity[2]);
   r.c0 = sc.fluid.sound_speed;
   if (!(r.c0 > 0.0)) return r;
   r.mach = sc.fluid.expected_speed / r.c0;
   r.flow = r.mach * r.mach;
-  r.hydrostatic = g * sc.fill_height() / (r.c0 * r.c0);
+  r.hydrostatic = sc.gravity_magnitude() * sc.fill_height() / (r.c0 * r.c0);
+  r.buoyancy = r.hydrostatic * neutral_buoyancy_factor(sc);
   return r;
 }
 

@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "scene/sound_speed_rule.hpp"
 
 using namespace sphdem;
 
@@ -57,6 +59,20 @@ TEST(SceneLimits, ASoundSpeedPastTheWeaklyCompressibleLimitIsRefused) {
   // 6 mm of water: g H / c0^2 = 1 % at c0 = 2.43 m/s
   EXPECT_TRUE(names_key(breaches_of({"fluid.sound_speed=2.0"}), "fluid.sound_speed"));
   EXPECT_TRUE(breaches_of({"fluid.sound_speed=2.6"}).empty());
+}
+
+TEST(SceneLimits, ASoundSpeedThatBuoysANearlyNeutralSphereIsRefused) {
+  // rho_p = 1050: the compression's share of the buoyant weight is 20 g H / c0^2, 2 % at
+  // c0 = 7.67 m/s (the 2500 kg/m^3 glass above passes at 2.6 m/s)
+  EXPECT_TRUE(names_key(breaches_of({"species.0.density=1050", "fluid.sound_speed=7.5"}),
+                        "fluid.sound_speed"));
+  EXPECT_TRUE(breaches_of({"species.0.density=1050", "fluid.sound_speed=7.8"}).empty());
+  // the automatic c0 keeps it at 1 %
+  const Scene sc = load_scene(SPHDEM_CASES_DIR "/single_particle.yaml",
+                              {"species.0.density=1050", "fluid.sound_speed=0"});
+  const SoundSpeedReport c = sound_speed_report(sc);
+  EXPECT_NEAR(c.buoyancy, kBuoyancyErrorTarget, 1e-12);
+  EXPECT_NEAR(c.c0, std::sqrt(9.81 * sc.fill_height() * 20 / 0.01), 1e-9 * c.c0);
 }
 
 TEST(SceneLimits, ASpringTooSoftForTheImpactIsRefused) {
