@@ -195,7 +195,9 @@ std::vector<Row> rows() {
   {
     BedScene b;
     b.voidage = 0.7;
-    r.push_back({"voidage_0.7", "a suspension at eps 0.7", b.yaml(), {}, 0.01, 0.05, ""});
+    Row row{"voidage_0.7", "a suspension at eps 0.7", b.yaml(), {}, 0.01, 0.05, ""};
+    row.hindered = true;
+    r.push_back(row);
   }
   // fine particles: 20 um in a packed bed, the SPH step bound by the fluid's drag exchange
   {
