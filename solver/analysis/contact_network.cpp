@@ -7,6 +7,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "io/vtk_xml_header.hpp"
+
 namespace sphdem {
 
 ContactNetwork contact_network(const DemParticles& s, const ContactNeighbourList& list,
@@ -93,15 +95,7 @@ void write_contact_network_vtp(const ContactNetwork& n, const std::string& path)
   const std::size_t o_ida = data.add(n.id_a), o_idb = data.add(n.id_b);
   std::ofstream out(path, std::ios::binary);
   if (!out) throw std::runtime_error("cannot write " + path);
-  const bool little = [] {
-    const std::uint16_t one = 1;
-    return *reinterpret_cast<const std::uint8_t*>(&one) == 1;
-  }();
-  out << "<?xml version=\"1.0\"?>\n"
-      << fmt::format(
-             "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"{}\" "
-             "header_type=\"UInt64\">\n",
-             little ? "LittleEndian" : "BigEndian")
+  out << vtk_polydata_opening()
       << fmt::format("<PolyData><Piece NumberOfPoints=\"{}\" NumberOfLines=\"{}\">\n", 2 * nc, nc)
       << fmt::format(
              "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" "

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/vtk_xml_header.hpp"
 #include "propagator/simulation.hpp"
 
 namespace sphdem {
@@ -111,15 +112,7 @@ std::size_t write_neighbourhood_vtp(const Simulation& sim, double cx, double cy,
     connectivity[k] = static_cast<std::int64_t>(k);
     offsets[k] = static_cast<std::int64_t>(k + 1);
   }
-  const bool little = [] {
-    const std::uint16_t one = 1;
-    return *reinterpret_cast<const std::uint8_t*>(&one) == 1;
-  }();
-  out << "<?xml version=\"1.0\"?>\n"
-      << fmt::format(
-             "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"{}\" "
-             "header_type=\"UInt64\">\n<PolyData>\n",
-             little ? "LittleEndian" : "BigEndian")
+  out << vtk_polydata_opening() << "<PolyData>\n"
       << fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\">\n<Points>\n", n, n);
   data_array(out, "Float64", "points", 3, interleaved(r.x, r.y, r.z));
   out << "</Points>\n<Verts>\n";

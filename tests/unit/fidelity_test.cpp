@@ -52,7 +52,7 @@ TEST(Fidelity, PresetsSetWhatTheSceneLeavesUnset) {
   EXPECT_EQ(again.fidelity, "fast");
   EXPECT_NE(fast.fidelity_note.find("0.00025"), std::string::npos) << fast.fidelity_note;
   // c0 = f sqrt(2 g H): the density error 1/(2 f^2)
-  EXPECT_NEAR(sound_speed_report(fast).expected_density_error(), 1.0 / (2 * 7.5 * 7.5), 1e-12);
+  EXPECT_NEAR(sound_speed_report(fast).expected_density_error(), 1.0 / (2 * 8.0 * 8.0), 1e-12);
   EXPECT_NEAR(sound_speed_report(acc).expected_density_error(), 1.0 / (2 * 20.0 * 20.0), 1e-12);
   EXPECT_EQ(fast.time.cfl, 0.3);
   EXPECT_EQ(acc.time.dem_steps_per_contact, 40);
