@@ -1405,8 +1405,9 @@ SCENES = [
 # ----------------------------------------------------------------------------------------
 # The regime matrix (issue 14): every regime with the same defaults
 # ----------------------------------------------------------------------------------------
-# Three regimes are measured by validation gtests, not by sphdem runs (a shear wave's
-# initial field, a bed without gravity, the sand column's base loads): each records its
+# Five regimes are measured (in part) by validation gtests, not by sphdem runs (a shear
+# wave's initial field, a bed without gravity, the sand column's base loads, a sphere or a
+# grain in columns the reduced mode does not run): each records its
 # numbers with RecordProperty, ctest writes them to BUILD/GTEST_XML/<test>.xml
 # (tests/validation/CMakeLists.txt) before this report runs, and the report runs a test
 # itself when its file is missing or older than the test's executable.
@@ -1487,10 +1488,16 @@ class Regime:
 MATRIX = [
     Regime("one 100 µm sphere released 1, 7 and 30 mm deep", "single_particle",
            "slip within 1 % of (4.1) at each depth", rows=[("single_particle", "superficial slip")],
-           elsewhere="7 and 30 mm deep: the sweeps of bench/TRADEOFF.md (commands there)"),
+           gtests=[("regime_depth_validation", "SphereAtDepth.SevenMillimetres",
+                    [("slip_error", "7 mm deep: slip against (4.1)")]),
+                   ("regime_depth_validation", "SphereAtDepth.ThirtyMillimetres",
+                    [("slip_error", "30 mm deep")])]),
     Regime("one 2.8 mm grain in a 1 m water column (c0 ≈ 44 m/s)", "inertial grain",
            "terminal slip within 2 % of Brown–Lawler",
-           elsewhere="bench/TRADEOFF.md (the grain's sweep and its command; ~1 h a run)"),
+           gtests=[("regime_depth_validation", "InertialGrain.TerminalSlipAtTheMetreColumnsSoundSpeed",
+                    [("slip_error", "mean slip over 0.15–0.28 s against Brown–Lawler")])],
+           elsewhere="reduced: a 0.15 m column at the 1 m column's c0 = 44 m/s and resolution (the extra drag "
+                     "grows with c0, not with the depth itself); the grain in the 1 m column not run"),
     Regime("blocks ε = 0.9 and 0.8, 2 and 4 mm tall", "block_monodisperse",
            "infinite-block slip within 2 % of (4.4)", rows=[("block_monodisperse", "ε = 0.8, infinite-block", 0.02)]),
     Regime("the monodisperse suspension", "suspension_monodisperse",

@@ -33,11 +33,26 @@ inline double bisect(const std::function<double(double)>& f, double a, double b)
   return 0.5 * (a + b);
 }
 
+// Terminal speed of one sphere in clear fluid under Brown & Lawler's (2003) C_d:
+//   (rho_p - rho_f) V g = (1/8) C_d pi d^2 rho_f v^2,
+//   C_d = 24/Re (1 + 0.150 Re^0.681) + 0.407 / (1 + 8710/Re),  Re = rho_f v d / mu.
+inline double brown_lawler_terminal(double d, double rho_p, double rho_f, double mu, double g) {
+  const double weight = (rho_p - rho_f) * M_PI * d * d * d / 6.0 * g;
+  auto f = [&](double v) {
+    const double re = rho_f * v * d / mu;
+    const double cd = 24.0 / re * (1.0 + 0.150 * std::pow(re, 0.681)) + 0.407 / (1.0 + 8710.0 / re);
+    return 0.125 * cd * M_PI * d * d * rho_f * v * v - weight;
+  };
+  return bisect(f, 1e-9, 100.0);
+}
+
 // Terminal superficial slip of a constant-porosity block under Di Felice-Dallavalle
 // drag (thesis eq. 4.2-4.4):
 //   (rho_p - rho_av) V g = (1/8) C_d eps^-xi pi d^2 rho_f v^2,  rho_av = eps rho_f + (1-eps) rho_p,
-//   C_d = (0.63 + 4.8/sqrt(Re))^2, xi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2 / 2), Re = rho_f v d / mu.
-inline double di_felice_block_slip(double d, double rho_p, double rho_f, double mu, double g, double eps) {
+//   C_d = (0.63 + 4.8/sqrt(Re))^2, xi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2 / 2), Re = rho_f v d /
+//   mu.
+inline double di_felice_block_slip(double d, double rho_p, double rho_f, double mu, double g,
+                                   double eps) {
   const double V = M_PI * d * d * d / 6.0;
   const double rho_av = eps * rho_f + (1.0 - eps) * rho_p;
   const double weight = (rho_p - rho_av) * V * g;
@@ -55,8 +70,9 @@ inline double di_felice_block_slip(double d, double rho_p, double rho_f, double 
 inline double beetstra_f_mono(double eps, double re) {
   const double phi = 1.0 - eps;
   const double stokes = 10.0 * phi / (eps * eps) + eps * eps * (1.0 + 1.5 * std::sqrt(phi));
-  const double inertial = 0.413 * re / (24.0 * eps * eps) * (1.0 / eps + 3.0 * eps * phi + 8.4 * std::pow(re, -0.343)) /
-                          (1.0 + std::pow(10.0, 3.0 * phi) * std::pow(re, -(1.0 + 4.0 * phi) / 2.0));
+  const double inertial =
+      0.413 * re / (24.0 * eps * eps) * (1.0 / eps + 3.0 * eps * phi + 8.4 * std::pow(re, -0.343)) /
+      (1.0 + std::pow(10.0, 3.0 * phi) * std::pow(re, -(1.0 + 4.0 * phi) / 2.0));
   return stokes + inertial;
 }
 
@@ -66,8 +82,8 @@ inline double beetstra_f_mono(double eps, double re) {
 // x_i the volume fractions (from the number fractions n_i: x_i ~ n_i d_i^3). It is the
 // block's force balance, sum_i N_i eps (rho_p - rho_f) V_i g = sum_i N_i F_i, with
 // F_i = beta_i f_mono 3 pi mu d_i u of (2.88): sum_i x_i/y_i = 1 collapses the sum to (4.5).
-inline double bidisperse_block_slip(double d1, double d2, double n1, double rho_p, double rho_f, double mu, double g,
-                                    double eps) {
+inline double bidisperse_block_slip(double d1, double d2, double n1, double rho_p, double rho_f,
+                                    double mu, double g, double eps) {
   const double n2 = 1.0 - n1;
   const double v1 = n1 * d1 * d1 * d1, v2 = n2 * d2 * d2 * d2;
   const double x1 = v1 / (v1 + v2), x2 = v2 / (v1 + v2);
@@ -76,7 +92,8 @@ inline double bidisperse_block_slip(double d1, double d2, double n1, double rho_
   const double sigma = x1 / (y1 * y1) + x2 / (y2 * y2);
   auto residual = [&](double u) {
     const double re = rho_f * dm * u / mu;
-    return u - (rho_p - rho_f) * g * dm * dm / (18.0 * mu * (beetstra_f_mono(eps, re) / eps + (sigma - 1.0) / (eps * eps)));
+    return u - (rho_p - rho_f) * g * dm * dm /
+                   (18.0 * mu * (beetstra_f_mono(eps, re) / eps + (sigma - 1.0) / (eps * eps)));
   };
   return bisect(residual, 1e-9, 1.0);
 }
