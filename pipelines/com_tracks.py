@@ -69,11 +69,7 @@ def catalyst_execute(info):
     dz = (box[5] - box[4]) / nb
     frac = sums[3 * ns:].reshape(ns, nb) / ((box[1] - box[0]) * (box[3] - box[2]) * dz)
     path = os.path.join(si.OUT, "com.csv")
-    if si.resumed() and "resumed" not in state:  # rows and c0 of the run before
-        state["resumed"] = True
-        state.update(si.load_state("com_tracks"))
-        if si.continue_csv(path):
-            state["header"] = True
+    si.resume_csv_pipeline(state, "com_tracks", path)  # rows and c0 of the run before
     if "c0" not in state:
         state["c0"] = [float(np.median(frac[k][frac[k] > 0])) if np.any(frac[k] > 0) else 0.0 for k in range(ns)]
         si.save_state("com_tracks", {"c0": state["c0"]})

@@ -67,11 +67,7 @@ def catalyst_execute(info):
     inside = (z >= 0.0) & (z <= H)
     z, eps = z[inside], eps[inside]
     path = os.path.join(si.OUT, "interfaces.csv")
-    if si.resumed() and "resumed" not in state:  # rows and eps_s of the run before
-        state["resumed"] = True
-        state.update(si.load_state("interfaces"))
-        if si.continue_csv(path):
-            state["header"] = True
+    si.resume_csv_pipeline(state, "interfaces", path)  # rows and eps_s of the run before
     if "eps_s" not in state:
         occupied = eps[eps < 0.99]
         state["eps_s"] = float(np.median(occupied)) if occupied.size else math.nan

@@ -83,6 +83,17 @@ def load_state(name):
         return {}
 
 
+def resume_csv_pipeline(state, name, path):
+    """Once, at a resumed run's first analysis: a CSV pipeline takes back the state it saved
+    (values fixed at the first analysis) and continues its CSV (rows up to the checkpoint)."""
+    if not resumed() or "resumed" in state:
+        return
+    state["resumed"] = True
+    state.update(load_state(name))
+    if continue_csv(path):
+        state["header"] = True
+
+
 def continue_csv(path):
     """A resumed run's CSV: the header and the rows of times up to the checkpoint are
     kept (first column: time), later rows cut. Returns whether the file had a header."""
