@@ -94,24 +94,26 @@ inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& hal
     const double psi_a = kDiffusion ? psi[a] : 0.0, vol_a = kDiffusion ? vol[a] : 0.0;
     const std::uint32_t* __restrict nb = half.neighbour.data() + half.begin(a);
     const std::uint32_t len = half.end(a) - half.begin(a);
-    double* __restrict mirror_dwdh = acc.entries(t, mirrors * std::size_t{len});
-    double* __restrict mirror_div = mirror_dwdh + len;
-    double* __restrict mirror_diff = mirror_div + len;
     double sum_dwdh = self_dwdh(f, a), sum_div = 0.0, sum_diff = 0.0;
+    const std::uint32_t last = len == 0 ? 0 : len - 1, padded = (len + 7) & ~7u;
+    double* __restrict mirror_dwdh = acc.entries(t, mirrors * std::size_t{padded});
+    double* __restrict mirror_div = mirror_dwdh + padded;
+    double* __restrict mirror_diff = mirror_div + padded;
 #pragma omp simd reduction(+ : sum_dwdh, sum_div, sum_diff)
-    for (std::uint32_t k = 0; k < len; ++k) {
-      const std::uint32_t b = nb[k];
+    for (std::uint32_t k = 0; k < padded; ++k) {  // whole vectors: the tail repeats the last
+      const double live = k < len ? 1.0 : 0.0;    // entry, with weight 0 for a
+      const std::uint32_t b = nb[std::min(k, last)];
       const double dx = xa - x[b], dy = ya - y[b], dz = za - z[b];
       const double udotr = (vxa - vx[b]) * dx + (vya - vy[b]) * dy + (vza - vz[b]) * dz;
       const DensityTerms d = density_terms(std::sqrt(dx * dx + dy * dy + dz * dz), udotr, inv_ha,
-                                           inv_h[b], ma, mass[b]);
+                                           inv_h[b], ma, live * mass[b]);
       sum_dwdh += d.dwdh_a;
       sum_div += d.div_a;
       mirror_dwdh[k] = d.dwdh_b;
       mirror_div[k] = d.div_b;
       if constexpr (kDiffusion) {
         const double dpsi_f = (psi[b] - psi_a) * d.minus_f;
-        sum_diff += dpsi_f * vol[b];
+        sum_diff += dpsi_f * live * vol[b];
         mirror_diff[k] = -dpsi_f * vol_a;
       }
     }

@@ -12,8 +12,28 @@ namespace sphdem {
 
 namespace {
 
-// Rows [lo, hi) of the half list: theta and the signal speed of a, and of each owned b
-// (the mirror pair: r_ba = -r_ab, u_ba = -u_ab).
+// One pair's shares of theta (2.55-2.57, 2.70) with r_ab = (dx, dy, dz) and u_ab: the
+// pressure factor s (grad W = F r_ab), the Morris factor and the signal speed; s and the
+// Morris factor are zero beyond both supports (the kernels' clamp), the signal speed is not.
+struct MomentumTerms {
+  double s, visc, vsig;
+};
+inline MomentumTerms momentum_terms(double r2, double udotr, double ha, double hb, double inv_ha,
+                                    double inv_hb, double rhoa, double rhob, double pa, double pb,
+                                    double ca, double cb, double alpha, double two_mu) {
+  const double r = std::sqrt(r2), inv_r = 1.0 / r;
+  const double Fa = kernel::grad_factor_q(r * inv_ha, inv_ha);
+  const double Fb = kernel::grad_factor_q(r * inv_hb, inv_hb);
+  const double vsig = 0.5 * (ca + cb) + std::abs(udotr) * inv_r;
+  // Monaghan (2.56), approaching pairs only
+  const double pi_ab = udotr < 0.0 ? -alpha * vsig * udotr * inv_r / (rhoa + rhob) : 0.0;
+  const double hm = 0.5 * (ha + hb);
+  return {(pa + pi_ab) * Fa + (pb + pi_ab) * Fb,
+          two_mu * 0.5 * (Fa + Fb) * r2 / (rhoa * rhob * (r2 + 0.01 * hm * hm)), vsig};
+}
+
+// Rows [lo, hi) of the half list, one pair at a time: theta and the signal speed of a, and
+// of each owned b (the mirror pair: r_ba = -r_ab, u_ba = -u_ab); the skin's entries skipped.
 inline void momentum_rows(const FluidParticles& f, const NeighbourList& half,
                           const MomentumParams& p, PairAccumulator& acc, int t, std::size_t lo,
                           std::size_t hi) {
@@ -31,31 +51,21 @@ inline void momentum_rows(const FluidParticles& f, const NeighbourList& half,
       const double r2 = dx * dx + dy * dy + dz * dz;
       const double hb = f.h[b], reach = kernel::kSupport * std::max(ha, hb);
       if (r2 >= reach * reach) continue;  // in the list's skin only
-      const double r = std::sqrt(r2), inv_r = 1.0 / r;
-      const double inv_hb = f.inv_h[b];
-      const double Fa = kernel::grad_factor_q(r * inv_ha, inv_ha);
-      const double Fb = kernel::grad_factor_q(r * inv_hb, inv_hb);
-      const double rhob = f.rho[b], mb = f.mass[b];
       const double ux = vxa - f.vx[b], uy = vya - f.vy[b], uz = vza - f.vz[b];
-      const double udotr = ux * dx + uy * dy + uz * dz;
-      const double vsig = 0.5 * (ca + f.cs[b]) + std::abs(udotr) * inv_r;
-      double pi_ab = 0.0;
-      if (udotr < 0.0)  // Monaghan (2.56), approaching pairs only
-        pi_ab = -p.alpha_artificial * vsig * udotr * inv_r / (rhoa + rhob);
-      // Symmetric in a and b: s (pressure, grad W = F r_ab) and the Morris factor.
-      const double s = (pa + pi_ab) * Fa + (f.p_term[b] + pi_ab) * Fb;
-      const double hm = 0.5 * (ha + hb);
-      const double visc = two_mu * 0.5 * (Fa + Fb) * r2 / (rhoa * rhob * (r2 + 0.01 * hm * hm));
-      tx += mb * (-s * dx + visc * ux);
-      ty += mb * (-s * dy + visc * uy);
-      tz += mb * (-s * dz + visc * uz);
-      vsig_max = std::max(vsig_max, vsig);
+      const MomentumTerms m =
+          momentum_terms(r2, ux * dx + uy * dy + uz * dz, ha, hb, inv_ha, f.inv_h[b], rhoa,
+                         f.rho[b], pa, f.p_term[b], ca, f.cs[b], p.alpha_artificial, two_mu);
+      const double mb = f.mass[b];
+      tx += mb * (-m.s * dx + m.visc * ux);
+      ty += mb * (-m.s * dy + m.visc * uy);
+      tz += mb * (-m.s * dz + m.visc * uz);
+      vsig_max = std::max(vsig_max, m.vsig);
       if (b < n) {  // the mirror pair, for the owned b
         double* rb = acc.row(t, b);
-        rb[0] += ma * (s * dx - visc * ux);
-        rb[1] += ma * (s * dy - visc * uy);
-        rb[2] += ma * (s * dz - visc * uz);
-        rb[3] = std::max(rb[3], vsig);
+        rb[0] += ma * (m.s * dx - m.visc * ux);
+        rb[1] += ma * (m.s * dy - m.visc * uy);
+        rb[2] += ma * (m.s * dz - m.visc * uz);
+        rb[3] = std::max(rb[3], m.vsig);
       }
     }
     double* ra = acc.row(t, a);
@@ -66,15 +76,85 @@ inline void momentum_rows(const FluidParticles& f, const NeighbourList& half,
   }
 }
 
-// The same loop compiled for x86-64-v4 (fused multiply-add; it stays one pair at a time:
-// its thirteen gathers per pair cost more in eight lanes than the lanes save).
+// The same rows, each row's pairs in eight lanes (as the density pass): every entry is
+// evaluated, the skin's come out zero (their signal speed masked), b's shares are kept per
+// entry and scattered after the lanes (a halo b's to the spare row n).
+inline void momentum_rows_lanes(const FluidParticles& f, const NeighbourList& half,
+                                const MomentumParams& p, PairAccumulator& acc, int t,
+                                std::size_t lo, std::size_t hi) {
+  const auto n = static_cast<std::uint32_t>(f.n_owned);
+  const double two_mu = 2.0 * p.viscosity, alpha = p.alpha_artificial;
+  const double* __restrict x = f.x.data();
+  const double* __restrict y = f.y.data();
+  const double* __restrict z = f.z.data();
+  const double* __restrict vx = f.vx.data();
+  const double* __restrict vy = f.vy.data();
+  const double* __restrict vz = f.vz.data();
+  const double* __restrict h = f.h.data();
+  const double* __restrict inv_h = f.inv_h.data();
+  const double* __restrict rho = f.rho.data();
+  const double* __restrict mass = f.mass.data();
+  const double* __restrict p_term = f.p_term.data();
+  const double* __restrict cs = f.cs.data();
+  for (std::size_t a = lo; a < hi; ++a) {
+    const double ha = h[a], inv_ha = inv_h[a], rhoa = rho[a], ma = mass[a];
+    const double pa = p_term[a], ca = cs[a];
+    const double xa = x[a], ya = y[a], za = z[a];
+    const double vxa = vx[a], vya = vy[a], vza = vz[a];
+    const std::uint32_t* __restrict nb = half.neighbour.data() + half.begin(a);
+    const std::uint32_t len = half.end(a) - half.begin(a);
+    if (len == 0) continue;
+    const std::uint32_t last = len - 1, padded = (len + 7) & ~7u;
+    double* __restrict mirror_x = acc.entries(t, 4 * std::size_t{padded});
+    double* __restrict mirror_y = mirror_x + padded;
+    double* __restrict mirror_z = mirror_y + padded;
+    double* __restrict mirror_vsig = mirror_z + padded;
+    double tx = 0, ty = 0, tz = 0, vsig_max = ca;
+#pragma omp simd reduction(+ : tx, ty, tz) reduction(max : vsig_max)
+    for (std::uint32_t k = 0; k < padded; ++k) {  // whole vectors: the tail repeats the last
+      const double live = k < len ? 1.0 : 0.0;    // entry, with weight 0 for a
+      const std::uint32_t b = nb[std::min(k, last)];
+      const double dx = xa - x[b], dy = ya - y[b], dz = za - z[b];
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      const double hb = h[b], reach = kernel::kSupport * std::max(ha, hb);
+      const double ux = vxa - vx[b], uy = vya - vy[b], uz = vza - vz[b];
+      const MomentumTerms m =
+          momentum_terms(r2, ux * dx + uy * dy + uz * dz, ha, hb, inv_ha, inv_h[b], rhoa, rho[b],
+                         pa, p_term[b], ca, cs[b], alpha, two_mu);
+      const double vsig = r2 < reach * reach ? m.vsig : 0.0;  // the skin's: none
+      const double mb = live * mass[b];
+      tx += mb * (-m.s * dx + m.visc * ux);
+      ty += mb * (-m.s * dy + m.visc * uy);
+      tz += mb * (-m.s * dz + m.visc * uz);
+      vsig_max = std::max(vsig_max, vsig);
+      mirror_x[k] = ma * (m.s * dx - m.visc * ux);
+      mirror_y[k] = ma * (m.s * dy - m.visc * uy);
+      mirror_z[k] = ma * (m.s * dz - m.visc * uz);
+      mirror_vsig[k] = vsig;
+    }
+    for (std::uint32_t k = 0; k < len; ++k) {
+      double* rb = acc.row(t, std::min(nb[k], n));
+      rb[0] += mirror_x[k];
+      rb[1] += mirror_y[k];
+      rb[2] += mirror_z[k];
+      rb[3] = std::max(rb[3], mirror_vsig[k]);
+    }
+    double* ra = acc.row(t, a);
+    ra[0] += tx;
+    ra[1] += ty;
+    ra[2] += tz;
+    ra[3] = std::max(ra[3], vsig_max);
+  }
+}
+
+// For x86-64-v4: eight lanes, gathers, fused multiply-add.
 SPHDEM_TARGET_AVX512 void momentum_rows_avx512(const FluidParticles& f, const NeighbourList& half,
                                                const MomentumParams& p, PairAccumulator& acc, int t,
                                                std::size_t lo, std::size_t hi) {
-  momentum_rows(f, half, p, acc, t, lo, hi);
+  momentum_rows_lanes(f, half, p, acc, t, lo, hi);
 }
 
-// And for x86-64-v3 (fused multiply-add).
+// The scalar rows compiled for x86-64-v3 (fused multiply-add).
 SPHDEM_TARGET_AVX2 void momentum_rows_avx2(const FluidParticles& f, const NeighbourList& half,
                                            const MomentumParams& p, PairAccumulator& acc, int t,
                                            std::size_t lo, std::size_t hi) {
@@ -86,7 +166,7 @@ SPHDEM_TARGET_AVX2 void momentum_rows_avx2(const FluidParticles& f, const Neighb
 void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& half,
                                 const MomentumParams& p, PairAccumulator& acc, PairIsa isa) {
   const long n = static_cast<long>(f.n_owned);
-  acc.reset(n, 4);  // theta x, y, z and the largest signal speed
+  acc.reset(n + 1, 4);  // theta x, y, z and the largest signal speed; row n spare
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
