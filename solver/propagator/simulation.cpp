@@ -21,10 +21,13 @@ namespace sphdem {
 
 namespace {
 
-// Verlet skin of the fluid's lists (fluid-fluid and fluid-sphere), in units of the
-// largest h at the build: the lists hold the pairs within support + skin and are rebuilt
-// once the particles' displacements and the growth of h have used the skin up.
-constexpr double kFluidSkin = 0.2;
+// Verlet skins of the fluid's lists, in units of the largest h at the build: the lists
+// hold the pairs within support + skin and are rebuilt once the particles' displacements
+// and the growth of h have used the skin up. The fluid pairs' is thin (every pass over
+// them evaluates the skin's entries too); the fluid-sphere pairs' is wider (the spheres
+// move faster than the fluid, and a rebuild of those pairs renews the sphere lists).
+constexpr double kFluidSkin = 0.1;
+constexpr double kFluidSphereSkin = 0.2;
 
 DemParticles placed_spheres(const Scene& scene, FluidParticles& fluid) {
   DemParticles spheres;
@@ -132,6 +135,7 @@ void Simulation::rebuild_neighbours() {
   const double support = fluid_cutoff();
   hmax_at_build_ = f.n_owned > 0 ? support / kernel::kSupport : 0.0;
   fluid_skin_ = kFluidSkin * hmax_at_build_;
+  sphere_pair_skin_ = kFluidSphereSkin * hmax_at_build_;
   cell_size_ = support + fluid_skin_;
   f.resize(f.n_owned);
   fluid_halo_.build(box, box.halo_width(support, cell_size_), f.x.data(), f.y.data(), f.z.data(),
@@ -201,7 +205,7 @@ Simulation::VerletMargins Simulation::verlet_margins(const Displacements& d) con
   const double moved = std::max(d.fluid + d.sphere, d.fluid_since_pairs + d.sphere_since_pairs);
   m.sphere = sphere_pairs_stale()
                  ? -1.0
-                 : fluid_skin_ - (moved + params_.coupling.sphere_kernel_scale * d.growth);
+                 : sphere_pair_skin_ - (moved + params_.coupling.sphere_kernel_scale * d.growth);
   return m;
 }
 
@@ -253,7 +257,8 @@ void Simulation::build_sphere_pairs() {
 }
 
 double Simulation::fluid_sphere_cutoff() const {
-  return params_.coupling.sphere_kernel_scale * kernel::kSupport * hmax_at_build_ + fluid_skin_;
+  return params_.coupling.sphere_kernel_scale * kernel::kSupport * hmax_at_build_ +
+         sphere_pair_skin_;
 }
 
 // The fluid-sphere pairs' kernel values of this step and the voidage (2.50), or with

@@ -143,7 +143,7 @@ class Simulation {
   // fluid-sphere pairs index into.
   std::vector<double> xr_, yr_, zr_;
   std::vector<double> xp_, yp_, zp_, sxp_, syp_, szp_;  // fluid and spheres at the pairs' build
-  double hmax_at_build_ = 0, fluid_skin_ = 0;
+  double hmax_at_build_ = 0, fluid_skin_ = 0, sphere_pair_skin_ = 0;
   bool fluid_lists_stale_ = true;
   long sphere_pairs_built_at_ = -1;
   long neighbour_builds_ = 0;
