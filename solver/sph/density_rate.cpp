@@ -70,8 +70,8 @@ void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, P
 }
 
 // The same rows, each row's pairs in eight lanes: b's shares are kept per entry and
-// scattered after the vectorised loop (a halo b's go to the spare row n); the skin's
-// entries are evaluated and come out zero.
+// scattered after the vectorised loop to the owned b (a halo b's owner takes the pair from
+// its own row, as in the scalar rows); the skin's entries are evaluated and come out zero.
 template <bool kDiffusion>
 inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& half,
                                PairAccumulator& acc, int t, long lo, long hi) {
@@ -118,7 +118,8 @@ inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& hal
       }
     }
     for (std::uint32_t k = 0; k < len; ++k) {
-      double* rb = acc.row(t, std::min(nb[k], n));
+      if (nb[k] >= n) continue;  // a halo b: its owner's row gets the pair from its own side
+      double* rb = acc.row(t, nb[k]);
       rb[0] += mirror_dwdh[k];
       rb[1] += mirror_div[k];
       if constexpr (kDiffusion) rb[2] += mirror_diff[k];
@@ -156,9 +157,8 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
                                  const DensityDiffusion& dd, PairIsa isa) {
   const long n = static_cast<long>(f.n_owned);
   const bool diffusion = dd.on();
-  // per particle: sum_b m_b dW/dh, sum_b m_b u_ab . grad W (and the diffusion's sum); row n
-  // spare
-  acc.reset(n + 1, diffusion ? 3 : 2);
+  // per particle: sum_b m_b dW/dh, sum_b m_b u_ab . grad W (and the diffusion's sum)
+  acc.reset(n, diffusion ? 3 : 2);
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();

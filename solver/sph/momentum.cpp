@@ -78,7 +78,8 @@ inline void momentum_rows(const FluidParticles& f, const NeighbourList& half,
 
 // The same rows, each row's pairs in eight lanes (as the density pass): every entry is
 // evaluated, the skin's come out zero (their signal speed masked), b's shares are kept per
-// entry and scattered after the lanes (a halo b's to the spare row n).
+// entry and scattered after the lanes to the owned b (a halo b's owner takes the pair from
+// its own row, as in the scalar rows).
 inline void momentum_rows_lanes(const FluidParticles& f, const NeighbourList& half,
                                 const MomentumParams& p, PairAccumulator& acc, int t,
                                 std::size_t lo, std::size_t hi) {
@@ -133,7 +134,8 @@ inline void momentum_rows_lanes(const FluidParticles& f, const NeighbourList& ha
       mirror_vsig[k] = vsig;
     }
     for (std::uint32_t k = 0; k < len; ++k) {
-      double* rb = acc.row(t, std::min(nb[k], n));
+      if (nb[k] >= n) continue;  // a halo b: its owner's row gets the pair from its own side
+      double* rb = acc.row(t, nb[k]);
       rb[0] += mirror_x[k];
       rb[1] += mirror_y[k];
       rb[2] += mirror_z[k];
@@ -166,7 +168,7 @@ SPHDEM_TARGET_AVX2 void momentum_rows_avx2(const FluidParticles& f, const Neighb
 void compute_fluid_acceleration(FluidParticles& f, const NeighbourList& half,
                                 const MomentumParams& p, PairAccumulator& acc, PairIsa isa) {
   const long n = static_cast<long>(f.n_owned);
-  acc.reset(n + 1, 4);  // theta x, y, z and the largest signal speed; row n spare
+  acc.reset(n, 4);  // theta x, y, z and the largest signal speed
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
