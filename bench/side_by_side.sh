@@ -7,6 +7,7 @@
 # sphdem / peer of the medians.
 #
 #   bash bench/side_by_side.sh [BUILD] [ROUNDS]     (defaults: build, 3; ~10 min a round)
+#   SCENES="sph" bash bench/side_by_side.sh build 3  (a subset of sph, dem_settle, dem_bed)
 #
 # The peers' script installs lammps, liggghts and openmpi-bin if they are missing (root).
 # Everything goes to a temporary folder, printed in the header.
@@ -14,6 +15,15 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 BUILD="$(cd "${1:-$ROOT/build}" && pwd)"
 ROUNDS="${2:-3}"
+SCENES="${SCENES:-sph dem_settle dem_bed}"
+FILTER=""
+for sc in $SCENES; do
+  case "$sc" in
+    sph) b=FluidColumnStep ;; dem_settle) b=DemSettle ;; dem_bed) b=DemBed ;;
+    *) echo "side_by_side.sh: unknown scene $sc (sph, dem_settle, dem_bed)" >&2; exit 2 ;;
+  esac
+  FILTER="${FILTER:+$FILTER|}$b"
+done
 PEERS="${PEERS_DIR:-$ROOT/../shared/peers}"
 BENCH="$BUILD/bench/bench_scenes"
 [ -x "$BENCH" ] || { echo "side_by_side.sh: no $BENCH (build with -DSPHDEM_BUILD_BENCH=ON)" >&2; exit 2; }
@@ -25,10 +35,10 @@ echo "# sphdem $(git -C "$ROOT" rev-parse --short HEAD) ($BENCH), peers $PEERS, 
 for r in $(seq 1 "$ROUNDS"); do
   for t in 1 2; do
     echo "# round $r, $t thread(s)/rank(s): sphdem $(date -u +%H:%M:%S)"
-    OMP_NUM_THREADS=$t "$BENCH" --benchmark_filter='BM_(FluidColumnStep|DemSettle|DemBed)/' \
+    OMP_NUM_THREADS=$t "$BENCH" --benchmark_filter="BM_($FILTER)/" \
       --benchmark_out="$OUT/sphdem_r${r}_t$t.json" --benchmark_out_format=json >"$OUT/sphdem_r${r}_t$t.txt" 2>&1
     echo "# round $r, $t thread(s)/rank(s): peers $(date -u +%H:%M:%S)"
-    OUTDIR="$OUT/peers_r${r}_t$t" "$PEERS/run-peers.sh" --ranks "$t" --scenes "sph dem_settle dem_bed" \
+    OUTDIR="$OUT/peers_r${r}_t$t" "$PEERS/run-peers.sh" --ranks "$t" --scenes "$SCENES" \
       >"$OUT/peers_r${r}_t$t.txt" 2>&1
   done
 done
