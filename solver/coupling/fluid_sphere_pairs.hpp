@@ -31,6 +31,10 @@ struct FluidSpherePairs {
   std::vector<double> w;              // W(r_aj, H_a) per entry within the support
   std::vector<double> grad;           // grad_a W_aj = grad * (x_a - x_j) (evaluate with_gradient)
   std::vector<double> w_drag;         // W(r_aj, H^drag_a) per entry, only when drag_apart()
+  // Per row, with the kernel values: sum_j V_j W_aj and sum_j (V_j / d_j) W_aj, the solid
+  // fraction (2.50) and the Sauter mean's denominator (2.80), all species; with the drag's
+  // kernel apart, the same with it (else empty).
+  std::vector<double> solid, solid_over_d, drag_solid, drag_solid_over_d;
   double scale = 1.0;  // H_a / h_a of the mobile fluid (scene key coupling.sphere_kernel_scale)
   double drag_scale = 1.0;  // H^drag_a / h_a (coupling.drag_kernel_scale), <= scale
 
@@ -59,8 +63,8 @@ struct FluidSpherePairs {
   // <= kernel_scale (0: the same).
   void build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale,
                   double rc, double drag_kernel_scale = 0.0);
-  // Kernel values at the current positions (every step); the gradient factors only
-  // with_gradient (the variational pressure coupling reads them).
+  // Kernel values and row sums at the current positions (every step); the gradient
+  // factors only with_gradient (the variational pressure coupling reads them).
   void evaluate(const FluidParticles& f, const DemParticles& s, bool with_gradient = true,
                 PairIsa isa = best_pair_isa());
   // Both, at the cells' cut-off (tests).

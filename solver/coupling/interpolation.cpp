@@ -2,46 +2,140 @@
 
 #include <omp.h>
 
+#include "sph/pair_isa.hpp"
+
 namespace sphdem {
 
-void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f,
-                                  const FluidSpherePairs& pairs,
-                                  const std::vector<std::uint32_t>& halo_source,
-                                  PairAccumulator& acc) {
+namespace {
+
+// A sphere's row of sums: eight weighted by the drag's kernel W_jb (the first block, one
+// vector add per pair), then three that carry the fluid's force: m_b theta_b W_jb
+// (interpolated), or the variational pairs' V_a P_a grad_a W_aj; one pad.
+enum { kS, kEps, kUx, kUy, kUz, kDs, kDw, kPad, kGx, kGy, kGz, kRow = 12 };
+constexpr int kWeighted = 8;
+// The first block as one vector (one AVX-512 register, or four SSE2 ones; GCC/Clang).
+using Block = double __attribute__((vector_size(kWeighted * sizeof(double))));
+inline void add_block(double* r, double w, const Block& q) {  // r[0..8) += w q
+  Block v;
+  __builtin_memcpy(&v, r, sizeof v);
+  v += w * q;
+  __builtin_memcpy(r, &v, sizeof v);
+}
+
+// What a mobile fluid particle b gives the first block per unit W_jb: V_b, V_b eps_b,
+// V_b u_b, and V_b d_b, V_b where there are solids (the Sauter mean, Shepard-averaged);
+// zeros for a wall particle.
+void stage_fluid(const FluidParticles& f, double* staged) {
+  const long nf = static_cast<long>(f.n_owned);
+#pragma omp parallel for schedule(static)
+  for (long b = 0; b < nf; ++b) {
+    double* q = staged + kWeighted * b;
+    const double vb = f.kind[b] == kFluid ? f.mass[b] / f.rho[b] : 0.0;
+    const double vd = f.d_sauter[b] > 0.0 ? vb : 0.0;
+    q[kS] = vb;
+    q[kEps] = vb * f.eps_drag[b];
+    q[kUx] = vb * f.vx[b];
+    q[kUy] = vb * f.vy[b];
+    q[kUz] = vb * f.vz[b];
+    q[kDs] = vd * f.d_sauter[b];
+    q[kDw] = vd;
+    q[kPad] = 0.0;
+  }
+}
+
+// Rows [b over the thread's chunks]: every pair adds its drag-weighted block and its
+// force part to the sphere's owner row; with kPressure the variational pairs (and the
+// fluid's own share of them, added to its acceleration), else m_b theta_b W_jb.
+template <bool kPressure>
+inline double scatter_rows(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
+                           const std::uint32_t* __restrict halo_source, const double* staged,
+                           PairAccumulator& acc, const HydrostaticPressure& ph) {
   const std::size_t ns = s.n_owned;
   const long nf = static_cast<long>(f.n_owned);
-  enum { kS, kEps, kUx, kUy, kUz, kGx, kGy, kGz, kDs, kDw, kFields };
-  acc.reset(ns, kFields);
-  const std::vector<double>& weights = pairs.drag_w();  // the drag's kernel
-#pragma omp parallel
-  {
-    const int t = omp_get_thread_num();
-    // Interleaved chunks (rows differ in length); per-thread sums stay deterministic.
+  const int t = omp_get_thread_num();
+  const std::uint32_t* __restrict sphere = pairs.sphere.data();
+  const double* __restrict wd = pairs.drag_w().data();
+  const double* __restrict grad = pairs.grad.data();
+  double walls_on_spheres_z = 0.0;
+  // Interleaved chunks (rows differ in length); per-thread sums stay deterministic.
 #pragma omp for schedule(static, 64)
-    for (long b = 0; b < nf; ++b) {
-      if (f.kind[b] != kFluid) continue;
-      const double mb = f.mass[b], vb = mb / f.rho[b];
-      for (std::uint32_t k = pairs.begin(b); k < pairs.end(b); ++k) {
-        const double w = weights[k];
-        const std::uint32_t j = pairs.sphere[k];
-        const std::uint32_t owner = j < ns ? j : halo_source[j - ns];
-        double* r = acc.row(t, owner);
-        const double vw = vb * w, mw = mb * w;
-        r[kS] += vw;
-        r[kEps] += vw * f.eps_drag[b];
-        r[kUx] += vw * f.vx[b];
-        r[kUy] += vw * f.vy[b];
-        r[kUz] += vw * f.vz[b];
-        r[kGx] += mw * f.thx[b];
-        r[kGy] += mw * f.thy[b];
-        r[kGz] += mw * f.thz[b];
-        if (f.d_sauter[b] > 0.0) {  // Sauter mean where there are solids, Shepard-averaged
-          r[kDs] += vw * f.d_sauter[b];
-          r[kDw] += vw;
-        }
+  for (long b = 0; b < nf; ++b) {
+    const bool mobile = f.kind[b] == kFluid;
+    if (!kPressure && !mobile) continue;
+    Block q;
+    __builtin_memcpy(&q, staged + kWeighted * b, sizeof q);
+    const double xb = f.x[b], yb = f.y[b], zb = f.z[b];
+    const double vp = kPressure ? f.mass[b] / f.rho[b] * (f.P[b] - ph(zb)) : 0.0;  // V_b P_b
+    const double mb = f.mass[b];
+    const double mtx = mb * f.thx[b], mty = mb * f.thy[b], mtz = mb * f.thz[b];
+    double gx = 0.0, gy = 0.0, gz = 0.0;  // sum_j V_j grad_b W_bj = -grad eps_b
+    for (std::uint32_t k = pairs.begin(b); k < pairs.end(b); ++k) {
+      const std::uint32_t j = sphere[k];
+      double* __restrict r = acc.row(t, j < ns ? j : halo_source[j - ns]);
+      const double w = wd[k];
+      add_block(r, w, q);
+      if constexpr (kPressure) {  // per unit sphere volume
+        const double dx = xb - s.x[j], dy = yb - s.y[j], dz = zb - s.z[j];
+        const double gf = grad[k], c = s.volume(j) * gf, pg = vp * gf;
+        gx += c * dx;
+        gy += c * dy;
+        gz += c * dz;
+        r[kGx] += pg * dx;
+        r[kGy] += pg * dy;
+        r[kGz] += pg * dz;
+      } else {
+        r[kGx] += w * mtx;
+        r[kGy] += w * mty;
+        r[kGz] += w * mtz;
       }
     }
+    if constexpr (kPressure) {
+      if (!mobile) {  // a wall particle: what it pushes on the spheres, V_b P_b sum_j V_j dW/dz_b
+        walls_on_spheres_z += vp * gz;
+        continue;
+      }
+      const double p_over_rho = (f.P[b] - ph(zb)) / f.rho[b];
+      f.ax[b] -= p_over_rho * gx;
+      f.ay[b] -= p_over_rho * gy;
+      f.az[b] -=
+          p_over_rho * gz + ph.gradient_z() * f.eps[b] / f.rho[b];  // -grad P_h / rho_intrinsic
+    }
   }
+  return walls_on_spheres_z;
+}
+
+SPHDEM_TARGET_AVX512 double scatter_avx512(FluidParticles& f, const DemParticles& s,
+                                           const FluidSpherePairs& pairs,
+                                           const std::uint32_t* halo_source, const double* staged,
+                                           PairAccumulator& acc, const HydrostaticPressure* ph) {
+  return ph ? scatter_rows<true>(f, s, pairs, halo_source, staged, acc, *ph)
+            : scatter_rows<false>(f, s, pairs, halo_source, staged, acc, {});
+}
+
+double scatter_baseline(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
+                        const std::uint32_t* halo_source, const double* staged,
+                        PairAccumulator& acc, const HydrostaticPressure* ph) {
+  return ph ? scatter_rows<true>(f, s, pairs, halo_source, staged, acc, *ph)
+            : scatter_rows<false>(f, s, pairs, halo_source, staged, acc, {});
+}
+
+}  // namespace
+
+double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
+                                    const FluidSpherePairs& pairs,
+                                    const std::vector<std::uint32_t>& halo_source,
+                                    PairAccumulator& acc, const HydrostaticPressure* pressure,
+                                    PairIsa isa) {
+  const std::size_t ns = s.n_owned;
+  acc.reset(ns, kRow);
+  double* staged = acc.staged(kWeighted * f.n_owned);
+  stage_fluid(f, staged);
+  double walls_on_spheres_z = 0.0;
+#pragma omp parallel reduction(+ : walls_on_spheres_z)
+  walls_on_spheres_z +=
+      isa == PairIsa::kAvx512
+          ? scatter_avx512(f, s, pairs, halo_source.data(), staged, acc, pressure)
+          : scatter_baseline(f, s, pairs, halo_source.data(), staged, acc, pressure);
 #pragma omp parallel for schedule(static)
   for (long j = 0; j < static_cast<long>(ns); ++j) {
     const double S = acc.sum(j, kS);
@@ -52,17 +146,28 @@ void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f,
       s.ufx[j] = acc.sum(j, kUx) * inv;
       s.ufy[j] = acc.sum(j, kUy) * inv;
       s.ufz[j] = acc.sum(j, kUz) * inv;
-      s.gx[j] = acc.sum(j, kGx) * inv;
-      s.gy[j] = acc.sum(j, kGy) * inv;
-      s.gz[j] = acc.sum(j, kGz) * inv;
       const double dw = acc.sum(j, kDw);
       s.d_sauter[j] = dw > 0.0 ? acc.sum(j, kDs) / dw : 2.0 * s.radius[j];
     } else {
       s.d_sauter[j] = 2.0 * s.radius[j];
       s.eps[j] = 1.0;
-      s.ufx[j] = s.ufy[j] = s.ufz[j] = s.gx[j] = s.gy[j] = s.gz[j] = 0.0;
+      s.ufx[j] = s.ufy[j] = s.ufz[j] = 0.0;
+    }
+    if (pressure) {  // sum_a V_a P_a grad_a W_aj: the pressure force / V_j, + the buoyancy -grad
+                     // P_h
+      s.gx[j] = acc.sum(j, kGx);
+      s.gy[j] = acc.sum(j, kGy);
+      s.gz[j] = acc.sum(j, kGz) - pressure->gradient_z();
+    } else if (S > 0.0) {  // (2.69)
+      const double inv = 1.0 / S;
+      s.gx[j] = acc.sum(j, kGx) * inv;
+      s.gy[j] = acc.sum(j, kGy) * inv;
+      s.gz[j] = acc.sum(j, kGz) * inv;
+    } else {
+      s.gx[j] = s.gy[j] = s.gz[j] = 0.0;
     }
   }
+  return walls_on_spheres_z;
 }
 
 }  // namespace sphdem

@@ -5,7 +5,9 @@
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/hydrostatic_pressure.hpp"
 #include "sph/pair_accumulator.hpp"
+#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
@@ -20,9 +22,15 @@ namespace sphdem {
 // its owner (halo_source maps halo index - n_owned to the owned index), which is the
 // same sum over periodic images. A sphere with no fluid neighbour (above the free
 // surface) gets S_j = 0, eps_j = 1 and no fluid force.
-void interpolate_fluid_at_spheres(DemParticles& s, const FluidParticles& f,
-                                  const FluidSpherePairs& pairs,
-                                  const std::vector<std::uint32_t>& halo_source,
-                                  PairAccumulator& scratch);
+// With `pressure` (the variational coupling, coupling/pressure_coupling.hpp) the same pass
+// over the pairs carries that coupling's pairs instead of (2.69): the spheres' g becomes
+// their pressure force / V_j and the fluid gets its share; returns the walls' vertical
+// push on the spheres (0 without). One pass reads each pair once for both.
+double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
+                                    const FluidSpherePairs& pairs,
+                                    const std::vector<std::uint32_t>& halo_source,
+                                    PairAccumulator& scratch,
+                                    const HydrostaticPressure* pressure = nullptr,
+                                    PairIsa isa = best_pair_isa());
 
 }  // namespace sphdem

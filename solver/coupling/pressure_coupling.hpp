@@ -32,8 +32,11 @@ namespace sphdem {
 // the base pressure keeps no static offset (reduced sand column: 0.013 rho g H at rest against
 // 0.36). Returns the vertical force the wall particles' pairs put on the spheres (N): a load path
 // to the wall that the fluid particles do not see (analysis/pore_pressure.hpp).
-double couple_pressure_variationally(FluidParticles& f, DemParticles& s, const FluidSpherePairs& pairs,
-                                     const std::vector<std::uint32_t>& halo_source, PairAccumulator& scratch,
-                                     const HydrostaticPressure& ph = {});
+// The pairs are summed in the interpolation's pass (coupling/interpolation.hpp), which
+// sets the spheres' other fluid fields too.
+double couple_pressure_variationally(FluidParticles& f, DemParticles& s,
+                                     const FluidSpherePairs& pairs,
+                                     const std::vector<std::uint32_t>& halo_source,
+                                     PairAccumulator& scratch, const HydrostaticPressure& ph = {});
 
 }  // namespace sphdem

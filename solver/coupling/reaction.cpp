@@ -7,27 +7,22 @@ namespace sphdem {
 
 namespace {
 
-// sum_j fm_j W_aj / S_j over row a's spheres (S_j = 0: a sphere with no fluid, no share);
-// in lanes (AVX-512 gathers) or one sphere at a time.
+// sum_j W_aj (fm_j / S_j) over row a's spheres, with fm_j / S_j staged per sphere (three
+// values side by side); in lanes (AVX-512 gathers) or one sphere at a time.
 template <bool kLanes>
-inline void reaction_rows(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
+inline void reaction_rows(FluidParticles& f, const FluidSpherePairs& pairs, const double* share,
                           std::size_t lo, std::size_t hi) {
   const std::uint32_t* __restrict sphere = pairs.sphere.data();
   const double* __restrict w = pairs.drag_w().data();  // as the interpolation's S_j
-  const double* __restrict shepard = s.shepard.data();
-  const double* __restrict fmx = s.fmx.data();
-  const double* __restrict fmy = s.fmy.data();
-  const double* __restrict fmz = s.fmz.data();
+  const double* __restrict fm_over_s = share;
   for (std::size_t a = lo; a < hi; ++a) {
     if (f.kind[a] != kFluid) continue;
     double rx = 0, ry = 0, rz = 0;
     const auto add = [&](std::uint32_t k) {
-      const std::uint32_t j = sphere[k];
-      const double S = shepard[j];
-      const double share = S > 0.0 ? w[k] / S : 0.0;
-      rx += fmx[j] * share;
-      ry += fmy[j] * share;
-      rz += fmz[j] * share;
+      const double* q = fm_over_s + 3 * sphere[k];
+      rx += w[k] * q[0];
+      ry += w[k] * q[1];
+      rz += w[k] * q[2];
     };
     if constexpr (kLanes) {
 #pragma omp simd reduction(+ : rx, ry, rz)
@@ -42,25 +37,34 @@ inline void reaction_rows(FluidParticles& f, const DemParticles& s, const FluidS
   }
 }
 
-SPHDEM_TARGET_AVX512 void reaction_rows_avx512(FluidParticles& f, const DemParticles& s,
-                                               const FluidSpherePairs& pairs, std::size_t lo,
+SPHDEM_TARGET_AVX512 void reaction_rows_avx512(FluidParticles& f, const FluidSpherePairs& pairs,
+                                               const double* share, std::size_t lo,
                                                std::size_t hi) {
-  reaction_rows<true>(f, s, pairs, lo, hi);
+  reaction_rows<true>(f, pairs, share, lo, hi);
 }
 
 }  // namespace
 
 void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
-                           PairIsa isa) {
-  const long n = static_cast<long>(f.n_owned);
+                           PairAccumulator& scratch, PairIsa isa) {
+  const long n = static_cast<long>(f.n_owned), ns = static_cast<long>(s.size());
+  double* share = scratch.staged(3 * s.size());
+  // fm_j / S_j for every sphere, owned and halo (S_j = 0: a sphere with no fluid, no share)
+#pragma omp parallel for schedule(static)
+  for (long j = 0; j < ns; ++j) {
+    const double S = s.shepard[j], inv = S > 0.0 ? 1.0 / S : 0.0;
+    share[3 * j] = s.fmx[j] * inv;
+    share[3 * j + 1] = s.fmy[j] * inv;
+    share[3 * j + 2] = s.fmz[j] * inv;
+  }
   // rows differ in length: contiguous shares of equal entries (domain/row_partition.hpp)
 #pragma omp parallel
   {
     const auto [lo, hi] = thread_rows(pairs.list.offset, n, kFluidRowCost);
     if (isa == PairIsa::kAvx512)
-      reaction_rows_avx512(f, s, pairs, lo, hi);
+      reaction_rows_avx512(f, pairs, share, lo, hi);
     else
-      reaction_rows<false>(f, s, pairs, lo, hi);
+      reaction_rows<false>(f, pairs, share, lo, hi);
   }
 }
 

@@ -2,6 +2,8 @@
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
 #include "sph/fluid_particles.hpp"
+#include "sph/pair_accumulator.hpp"
+#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
@@ -10,8 +12,8 @@ namespace sphdem {
 //   f_a / m_a = -(1/rho_a) sum_j (fm_j / S_j) W_aj(h_a)
 // fm_j is the fluid force the sphere received (averaged over the SPH step) and S_j
 // the Shepard sum (2.72) over the same pairs, so sum_a f_a + sum_j fm_j = 0 to
-// round-off. Halo spheres must carry fm and shepard.
+// round-off. Halo spheres must carry fm and shepard. fm_j / S_j is staged in scratch.
 void add_reaction_on_fluid(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
-                           PairIsa isa = best_pair_isa());
+                           PairAccumulator& scratch, PairIsa isa = best_pair_isa());
 
 }  // namespace sphdem

@@ -5,7 +5,6 @@
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
 #include "sph/fluid_particles.hpp"
-#include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
@@ -24,10 +23,11 @@ struct BigSpheresSmoothedApart {
 // eps is clamped to eps_floor (default 0.3): the kernel estimate can undershoot in a
 // dense sediment; returns how many particles were clamped (logged per step). The voidage
 // the drag reads, eps_drag, is the same sum with the drag's kernel when pairs.drag_apart()
-// (its clamps counted too), else eps; the Sauter mean is the drag's.
+// (its clamps counted too), else eps; the Sauter mean is the drag's. The sums over all
+// species come from the pairs' evaluation (FluidSpherePairs::solid); with big spheres
+// smoothed apart the pairs are summed here without them.
 std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s,
                                   const FluidSpherePairs& pairs, double eps_floor,
-                                  const BigSpheresSmoothedApart* big = nullptr,
-                                  PairIsa isa = best_pair_isa());
+                                  const BigSpheresSmoothedApart* big = nullptr);
 
 }  // namespace sphdem

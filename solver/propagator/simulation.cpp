@@ -350,11 +350,10 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
     f.az[a] = mobile ? f.thz[a] + g[2] : 0.0;
   }
   lap(PassTimers::kMomentum);
-  // The variational switch needs the g the spheres felt, before the interpolation
-  // overwrites it.
-  if (variational) dem_.keep_pressure_gradient();
-  interpolate_fluid_at_spheres(s, f, sphere_pairs_, dem_.halo().source(), sphere_scratch_);
-  if (variational) apply_variational_pressure(hold_spheres);
+  if (variational)
+    apply_variational_pressure(hold_spheres);  // with the interpolation, in one pass
+  else
+    interpolate_fluid_at_spheres(s, f, sphere_pairs_, dem_.halo().source(), sphere_scratch_);
   lap(PassTimers::kInterp);
   if (hold_spheres) {
     // Held spheres: the force they feel now is what the fluid gets back (with the
@@ -369,15 +368,17 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   }
   const PeriodicHalo& sphere_halo = dem_.halo();
   for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard}) sphere_halo.fill(*v);
-  add_reaction_on_fluid(f, s, sphere_pairs_);
+  add_reaction_on_fluid(f, s, sphere_pairs_, sphere_scratch_);
   lap(PassTimers::kReaction);
 }
 
-// Variational pressure coupling (coupling/pressure_coupling.hpp): the fluid gets its
-// share now, the spheres' g becomes their pressure force / V, and unless they are held
-// their force of the last sub-step switches to it from the g they felt (kept before the
-// interpolation; DemSubstepper::switch_pressure_force).
+// Variational pressure coupling (coupling/pressure_coupling.hpp) and the interpolation
+// at the spheres: the fluid gets its share now, the spheres' g becomes their pressure
+// force / V, and unless they are held their force of the last sub-step switches to it
+// from the g they felt (kept before the pass overwrites it;
+// DemSubstepper::switch_pressure_force).
 void Simulation::apply_variational_pressure(bool hold_spheres) {
+  dem_.keep_pressure_gradient();
   walls_on_spheres_z_ =
       couple_pressure_variationally(fluid_, dem_.spheres(), sphere_pairs_, dem_.halo().source(),
                                     sphere_scratch_, params_.fluid.split);

@@ -28,6 +28,12 @@ class PairAccumulator {
     if (e.size() < count) e.resize(count);
     return e.data();
   }
+  // A buffer of at least `count` doubles shared by the threads, for the values per
+  // particle that a pass stages before its pair loop (grows only when needed).
+  double* staged(std::size_t count) {
+    if (staged_.size() < count) staged_.resize(count);
+    return staged_.data();
+  }
   // The calling thread's row for particle i.
   double* row(int thread, std::size_t i) { return data_.data() + (thread * n_ + i) * fields_; }
   // Sum over threads of field k of particle i.
@@ -47,6 +53,7 @@ class PairAccumulator {
   int fields_ = 0, threads_ = 1;
   std::vector<double> data_;
   std::vector<std::vector<double>> entries_;  // per thread, kept between passes
+  std::vector<double> staged_;
 };
 
 }  // namespace sphdem

@@ -140,7 +140,7 @@ TEST(Coupling, ActionAndReactionCancelToRoundOff) {
     std::fill(f.ax.begin(), f.ax.end(), 0.0);
     std::fill(f.ay.begin(), f.ay.end(), 0.0);
     std::fill(f.az.begin(), f.az.end(), 0.0);
-    add_reaction_on_fluid(f, s, c.pairs);
+    add_reaction_on_fluid(f, s, c.pairs, c.scratch);
     double rsum[3] = {0, 0, 0};
     for (std::size_t a = 0; a < f.n_owned; ++a) {
       if (f.kind[a] == kWall) {
@@ -383,8 +383,9 @@ double coupling_energy(Config& c, const TaitEnergy& eos, const HydrostaticPressu
 // central differences (step 1e-7 m, 5e-4 of the spacing; truncation ~1e-7) on every
 // axis of the spheres off the periodic faces and of 20 fluid particles near spheres.
 // A wrong sign, factor or missing term (the split's -grad P_h/rho on the fluid, its
-// buoyancy on the spheres) is an O(1) error. Measured: 1.3e-5 (no split) and 2.9e-6, the
-// floor of the differences (step 3e-7: 9e-5, truncation; 1e-8: 9e-5, round-off).
+// buoyancy on the spheres) is an O(1) error. Measured: 1.3e-5 (no split, scale 1), 2e-6 or
+// less in the other three, the floor of the differences (step 3e-7: 9e-5, truncation; 1e-8:
+// 9e-5, round-off).
 TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
   const TaitEnergy eos;
   for (const auto& [split, kernel_scale] :
@@ -472,9 +473,9 @@ TEST(Coupling, PairPassesMatchBruteForceWithEitherInstructionSet) {
     if (best_pair_isa() == PairIsa::kAvx512) isas.push_back(PairIsa::kAvx512);
     for (PairIsa isa : isas) {
       c.pairs.evaluate(f, s, true, isa);
-      compute_fluid_voidage(f, s, c.pairs, 0.0, nullptr, isa);
+      compute_fluid_voidage(f, s, c.pairs, 0.0);
       for (std::size_t a = 0; a < f.n_owned; ++a) f.ax[a] = f.ay[a] = f.az[a] = 0.0;
-      add_reaction_on_fluid(f, s, c.pairs, isa);
+      add_reaction_on_fluid(f, s, c.pairs, c.scratch, isa);
       std::size_t pairs_seen = 0;
       for (std::size_t a = 0; a < f.n_owned; ++a) {
         const double inv_h = c.pairs.inv_kernel_h(f, a), H = 1.0 / inv_h;
@@ -522,6 +523,78 @@ TEST(Coupling, PairPassesMatchBruteForceWithEitherInstructionSet) {
       }
       EXPECT_GT(pairs_seen, 10 * f.n_owned)
           << "the configuration should give every particle spheres";
+    }
+  }
+}
+
+// The pass from the fluid to the spheres (interpolation.hpp), interpolated and with the
+// variational pairs (pressure_coupling.hpp), against sums over every fluid particle and
+// every sphere image found by brute force, with either instruction set: the Shepard sum
+// S_j, u_f,j, eps_j and g_j = sum_b m_b theta_b W_jb / S_j (2.69, 2.72), or
+// g_j = sum_a V_a P_a grad_a W_aj - dP_h/dz and the fluid's share -P_a/rho_a sum_j V_j
+// grad_a W_aj. A wrong kernel (the drag's or the pairs'), field or image is an O(1) error.
+TEST(Coupling, SphereSumsMatchBruteForceWithEitherInstructionSet) {
+  for (double drag_kernel_scale : {0.0, 1.0}) {
+    Config c;
+    build(c, 60, 12, 0.1, /*kernel_scale=*/1.5, drag_kernel_scale);
+    FluidParticles& f = c.f;
+    DemParticles& s = c.s;
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<double> u(0.0, 100.0);
+    for (std::size_t a = 0; a < f.n_owned; ++a) f.P[a] = u(rng);
+    const HydrostaticPressure ph{1000.0, -9.81, c.box.hi[2]};
+    const std::size_t ns = s.n_owned;
+    const auto owner = [&](std::size_t j) { return j < ns ? j : c.sh.source()[j - ns]; };
+    // brute force: per owned sphere, S, S eps, S u_x, m theta_x W, and the pressure sums
+    std::vector<double> S(ns, 0.0), Se(ns, 0.0), Su(ns, 0.0), Mt(ns, 0.0), Pg[3];
+    for (auto& v : Pg) v.assign(ns, 0.0);
+    std::vector<double> fluid_share(f.n_owned, 0.0);  // -P_a/rho_a sum_j V_j dW/dz_a
+    for (std::size_t a = 0; a < f.n_owned; ++a) {
+      const double H = 1.0 / c.pairs.inv_kernel_h(f, a), Hd = 1.0 / c.pairs.inv_drag_kernel_h(f, a);
+      const double V = f.mass[a] / f.rho[a], vp = V * (f.P[a] - ph(f.z[a]));
+      for (std::size_t j = 0; j < s.size(); ++j) {
+        const double d[3] = {f.x[a] - s.x[j], f.y[a] - s.y[j], f.z[a] - s.z[j]};
+        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (r2 >= 4.0 * H * H) continue;
+        const std::size_t o = owner(j);
+        const double gf = kernel::grad_factor(r2, H);
+        for (int k = 0; k < 3; ++k) Pg[k][o] += vp * gf * d[k];
+        fluid_share[a] -= (f.P[a] - ph(f.z[a])) / f.rho[a] * s.volume(j) * gf * d[2];
+        if (f.kind[a] != kFluid) continue;
+        const double w = kernel::w(r2, Hd);
+        S[o] += V * w;
+        Se[o] += V * w * f.eps_drag[a];
+        Su[o] += V * w * f.vx[a];
+        Mt[o] += f.mass[a] * w * f.thz[a];
+      }
+    }
+    std::vector<PairIsa> isas{PairIsa::kBaseline};
+    if (best_pair_isa() == PairIsa::kAvx512) isas.push_back(PairIsa::kAvx512);
+    for (PairIsa isa : isas) {
+      interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch, nullptr, isa);
+      int seen = 0;
+      for (std::size_t j = 0; j < ns; ++j) {
+        EXPECT_NEAR(s.shepard[j], S[j], 1e-13 * S[j]) << "sphere " << j;
+        if (S[j] == 0.0) continue;
+        ++seen;
+        EXPECT_NEAR(s.eps[j], Se[j] / S[j], 1e-13) << "sphere " << j;
+        EXPECT_NEAR(s.ufx[j], Su[j] / S[j], 1e-13) << "sphere " << j;
+        EXPECT_NEAR(s.gz[j], Mt[j] / S[j], 1e-10) << "sphere " << j;  // |rho theta| < 1100
+      }
+      EXPECT_GE(seen, 30);
+      std::fill(f.az.begin(), f.az.end(), 0.0);
+      interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch, &ph, isa);
+      for (std::size_t j = 0; j < ns; ++j) {
+        const double scale = std::abs(Pg[0][j]) + std::abs(Pg[1][j]) + std::abs(Pg[2][j]) + 1.0;
+        EXPECT_NEAR(s.gx[j], Pg[0][j], 1e-12 * scale) << "sphere " << j;
+        EXPECT_NEAR(s.gy[j], Pg[1][j], 1e-12 * scale) << "sphere " << j;
+        EXPECT_NEAR(s.gz[j], Pg[2][j] - ph.gradient_z(), 1e-12 * scale) << "sphere " << j;
+      }
+      for (std::size_t a = 0; a < f.n_owned; ++a) {
+        if (f.kind[a] != kFluid) continue;
+        const double want = fluid_share[a] - ph.gradient_z() * f.eps[a] / f.rho[a];
+        EXPECT_NEAR(f.az[a], want, 1e-12 * (std::abs(want) + 1.0)) << "fluid particle " << a;
+      }
     }
   }
 }
