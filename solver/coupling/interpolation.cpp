@@ -48,9 +48,8 @@ void stage_fluid(const FluidParticles& f, double* staged) {
 // fluid's own share of them, added to its acceleration), else m_b theta_b W_jb.
 template <bool kPressure>
 inline double scatter_rows(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
-                           const std::uint32_t* __restrict halo_source, const double* staged,
-                           PairAccumulator& acc, const HydrostaticPressure& ph) {
-  const std::size_t ns = s.n_owned;
+                           const double* staged, PairAccumulator& acc,
+                           const HydrostaticPressure& ph) {
   const long nf = static_cast<long>(f.n_owned);
   const int t = omp_get_thread_num();
   const std::uint32_t* __restrict sphere = pairs.sphere.data();
@@ -71,7 +70,7 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
     double gx = 0.0, gy = 0.0, gz = 0.0;  // sum_j V_j grad_b W_bj = -grad eps_b
     for (std::uint32_t k = pairs.begin(b); k < pairs.end(b); ++k) {
       const std::uint32_t j = sphere[k];
-      double* __restrict r = acc.row(t, j < ns ? j : halo_source[j - ns]);
+      double* __restrict r = acc.row(t, j);  // a halo image's row goes to its owner later
       const double w = wd[k];
       add_block(r, w, q);
       if constexpr (kPressure) {  // per unit sphere volume
@@ -105,49 +104,48 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
 }
 
 SPHDEM_TARGET_AVX512 double scatter_avx512(FluidParticles& f, const DemParticles& s,
-                                           const FluidSpherePairs& pairs,
-                                           const std::uint32_t* halo_source, const double* staged,
+                                           const FluidSpherePairs& pairs, const double* staged,
                                            PairAccumulator& acc, const HydrostaticPressure* ph) {
-  return ph ? scatter_rows<true>(f, s, pairs, halo_source, staged, acc, *ph)
-            : scatter_rows<false>(f, s, pairs, halo_source, staged, acc, {});
+  return ph ? scatter_rows<true>(f, s, pairs, staged, acc, *ph)
+            : scatter_rows<false>(f, s, pairs, staged, acc, {});
 }
 
 double scatter_baseline(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
-                        const std::uint32_t* halo_source, const double* staged,
-                        PairAccumulator& acc, const HydrostaticPressure* ph) {
-  return ph ? scatter_rows<true>(f, s, pairs, halo_source, staged, acc, *ph)
-            : scatter_rows<false>(f, s, pairs, halo_source, staged, acc, {});
+                        const double* staged, PairAccumulator& acc, const HydrostaticPressure* ph) {
+  return ph ? scatter_rows<true>(f, s, pairs, staged, acc, *ph)
+            : scatter_rows<false>(f, s, pairs, staged, acc, {});
 }
 
 }  // namespace
 
 double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
-                                    const FluidSpherePairs& pairs,
-                                    const std::vector<std::uint32_t>& halo_source,
+                                    const FluidSpherePairs& pairs, const PeriodicHalo& halo,
                                     PairAccumulator& acc, const HydrostaticPressure* pressure,
                                     PairIsa isa) {
   const std::size_t ns = s.n_owned;
-  acc.reset(ns, kRow);
+  acc.reset(s.size(), kRow);
   double* staged = acc.staged(kWeighted * f.n_owned);
   stage_fluid(f, staged);
   double walls_on_spheres_z = 0.0;
 #pragma omp parallel reduction(+ : walls_on_spheres_z)
-  walls_on_spheres_z +=
-      isa == PairIsa::kAvx512
-          ? scatter_avx512(f, s, pairs, halo_source.data(), staged, acc, pressure)
-          : scatter_baseline(f, s, pairs, halo_source.data(), staged, acc, pressure);
+  walls_on_spheres_z += isa == PairIsa::kAvx512
+                            ? scatter_avx512(f, s, pairs, staged, acc, pressure)
+                            : scatter_baseline(f, s, pairs, staged, acc, pressure);
+  double* sums = acc.fold();        // rows of the threads' sums
+  halo.add_to_sources(sums, kRow);  // the halo images' sums to their owners
 #pragma omp parallel for schedule(static)
   for (long j = 0; j < static_cast<long>(ns); ++j) {
-    const double S = acc.sum(j, kS);
+    const auto sum = [&](int field) { return sums[j * kRow + field]; };
+    const double S = sum(kS);
     s.shepard[j] = S;
     if (S > 0.0) {
       const double inv = 1.0 / S;
-      s.eps[j] = acc.sum(j, kEps) * inv;
-      s.ufx[j] = acc.sum(j, kUx) * inv;
-      s.ufy[j] = acc.sum(j, kUy) * inv;
-      s.ufz[j] = acc.sum(j, kUz) * inv;
-      const double dw = acc.sum(j, kDw);
-      s.d_sauter[j] = dw > 0.0 ? acc.sum(j, kDs) / dw : 2.0 * s.radius[j];
+      s.eps[j] = sum(kEps) * inv;
+      s.ufx[j] = sum(kUx) * inv;
+      s.ufy[j] = sum(kUy) * inv;
+      s.ufz[j] = sum(kUz) * inv;
+      const double dw = sum(kDw);
+      s.d_sauter[j] = dw > 0.0 ? sum(kDs) / dw : 2.0 * s.radius[j];
     } else {
       s.d_sauter[j] = 2.0 * s.radius[j];
       s.eps[j] = 1.0;
@@ -155,14 +153,14 @@ double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
     }
     if (pressure) {  // sum_a V_a P_a grad_a W_aj: the pressure force / V_j, + the buoyancy -grad
                      // P_h
-      s.gx[j] = acc.sum(j, kGx);
-      s.gy[j] = acc.sum(j, kGy);
-      s.gz[j] = acc.sum(j, kGz) - pressure->gradient_z();
+      s.gx[j] = sum(kGx);
+      s.gy[j] = sum(kGy);
+      s.gz[j] = sum(kGz) - pressure->gradient_z();
     } else if (S > 0.0) {  // (2.69)
       const double inv = 1.0 / S;
-      s.gx[j] = acc.sum(j, kGx) * inv;
-      s.gy[j] = acc.sum(j, kGy) * inv;
-      s.gz[j] = acc.sum(j, kGz) * inv;
+      s.gx[j] = sum(kGx) * inv;
+      s.gy[j] = sum(kGy) * inv;
+      s.gz[j] = sum(kGz) * inv;
     } else {
       s.gx[j] = s.gy[j] = s.gz[j] = 0.0;
     }

@@ -5,10 +5,9 @@
 namespace sphdem {
 
 double couple_pressure_variationally(FluidParticles& f, DemParticles& s,
-                                     const FluidSpherePairs& pairs,
-                                     const std::vector<std::uint32_t>& halo_source,
+                                     const FluidSpherePairs& pairs, const PeriodicHalo& halo,
                                      PairAccumulator& acc, const HydrostaticPressure& ph) {
-  return interpolate_fluid_at_spheres(s, f, pairs, halo_source, acc, &ph);
+  return interpolate_fluid_at_spheres(s, f, pairs, halo, acc, &ph);
 }
 
 }  // namespace sphdem

@@ -4,6 +4,7 @@
 
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
+#include "domain/periodic_halo.hpp"
 #include "sph/fluid_particles.hpp"
 #include "sph/hydrostatic_pressure.hpp"
 #include "sph/pair_accumulator.hpp"
@@ -22,7 +23,7 @@ namespace sphdem {
 // Adds P_a grad eps_a / rho_a to (ax, ay, az) of the mobile fluid particles and sets
 // the spheres' (gx, gy, gz) to their pressure force / V_j, so that the fluid force
 // (2.68) V_j g_j + drag carries it. Wall particles push on the spheres (their pressure
-// is part of U) but do not move. halo_source maps a halo sphere to its owner.
+// is part of U) but do not move. A halo sphere's share goes to its owner (halo).
 // With a hydrostatic pressure ph (scene key coupling.hydrostatic_split) the forces are
 // those of U + sum_a m_a P_h(z_a)/rho'_a + sum_j V_j P_h(z_j) (rho' = rho/eps, intrinsic),
 // which differs from U by the constant integral of P_h over the box: the pairs carry
@@ -35,8 +36,7 @@ namespace sphdem {
 // The pairs are summed in the interpolation's pass (coupling/interpolation.hpp), which
 // sets the spheres' other fluid fields too.
 double couple_pressure_variationally(FluidParticles& f, DemParticles& s,
-                                     const FluidSpherePairs& pairs,
-                                     const std::vector<std::uint32_t>& halo_source,
+                                     const FluidSpherePairs& pairs, const PeriodicHalo& halo,
                                      PairAccumulator& scratch, const HydrostaticPressure& ph = {});
 
 }  // namespace sphdem

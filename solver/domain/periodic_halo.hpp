@@ -77,6 +77,17 @@ class PeriodicHalo {
   void fill(Vec& field) const {
     fill(field.data());
   }
+  // The reverse of fill, for sums a pass wrote to the ghosts: adds each ghost's row of
+  // `stride` values (rows: owned, then ghosts) to its source's row. One thread, so that
+  // the images of one particle add in a fixed order. (An MPI halo: the ghosts' rows go
+  // back to their owning rank.)
+  void add_to_sources(double* rows, std::size_t stride) const {
+    for (std::size_t g = 0; g < source_.size(); ++g) {
+      const double* from = rows + (n_owned_ + g) * stride;
+      double* to = rows + std::size_t{source_[g]} * stride;
+      for (std::size_t i = 0; i < stride; ++i) to[i] += from[i];
+    }
+  }
   const std::vector<std::uint32_t>& source() const {
     return source_;
   }

@@ -353,7 +353,7 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   if (variational)
     apply_variational_pressure(hold_spheres);  // with the interpolation, in one pass
   else
-    interpolate_fluid_at_spheres(s, f, sphere_pairs_, dem_.halo().source(), sphere_scratch_);
+    interpolate_fluid_at_spheres(s, f, sphere_pairs_, dem_.halo(), sphere_scratch_);
   lap(PassTimers::kInterp);
   if (hold_spheres) {
     // Held spheres: the force they feel now is what the fluid gets back (with the
@@ -379,9 +379,8 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
 // DemSubstepper::switch_pressure_force).
 void Simulation::apply_variational_pressure(bool hold_spheres) {
   dem_.keep_pressure_gradient();
-  walls_on_spheres_z_ =
-      couple_pressure_variationally(fluid_, dem_.spheres(), sphere_pairs_, dem_.halo().source(),
-                                    sphere_scratch_, params_.fluid.split);
+  walls_on_spheres_z_ = couple_pressure_variationally(
+      fluid_, dem_.spheres(), sphere_pairs_, dem_.halo(), sphere_scratch_, params_.fluid.split);
   if (!hold_spheres) dem_.switch_pressure_force();
 }
 

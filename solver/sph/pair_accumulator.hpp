@@ -36,6 +36,17 @@ class PairAccumulator {
   }
   // The calling thread's row for particle i.
   double* row(int thread, std::size_t i) { return data_.data() + (thread * n_ + i) * fields_; }
+  // Sums the threads' copies into the first and returns it (n rows of `fields` values);
+  // called outside a parallel region.
+  double* fold() {
+    const long n = static_cast<long>(n_ * fields_);
+    if (threads_ > 1) {
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < n; ++i)
+        for (int t = 1; t < threads_; ++t) data_[i] += data_[t * n + i];
+    }
+    return data_.data();
+  }
   // Sum over threads of field k of particle i.
   double sum(std::size_t i, int k) const {
     double s = 0.0;

@@ -122,7 +122,7 @@ TEST(Coupling, ActionAndReactionCancelToRoundOff) {
     ASSERT_EQ(c.pairs.drag_apart(), seed == 4u);
     FluidParticles& f = c.f;
     DemParticles& s = c.s;
-    interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch);
+    interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
     std::mt19937 rng(seed + 100);
     std::uniform_real_distribution<double> u(-1e-8, 1e-8);
     double fsum[3] = {0, 0, 0}, fabs_sum = 0;
@@ -169,7 +169,7 @@ TEST(Coupling, ShepardInterpolationIsExactForConstants) {
     f.thy[a] = 0.0;
     f.thz[a] = 9.81;
   }
-  interpolate_fluid_at_spheres(c.s, f, c.pairs, c.sh.source(), c.scratch);
+  interpolate_fluid_at_spheres(c.s, f, c.pairs, c.sh, c.scratch);
   for (std::size_t j = 0; j < c.s.n_owned; ++j) {
     EXPECT_NEAR(c.s.ufx[j], 0.25, 1e-14);
     EXPECT_NEAR(c.s.ufy[j], -1.5, 1e-14);
@@ -205,7 +205,7 @@ TEST(Coupling, DragKernelApartGathersWithTheNarrowKernel) {
   }
   EXPECT_GT(eps_moved, 1e-3);  // the two voidages differ: the test can tell them apart
   for (Config* c : {&apart, &narrow})
-    interpolate_fluid_at_spheres(c->s, c->f, c->pairs, c->sh.source(), c->scratch);
+    interpolate_fluid_at_spheres(c->s, c->f, c->pairs, c->sh, c->scratch);
   for (std::size_t j = 0; j < apart.s.n_owned; ++j) {
     EXPECT_NEAR(apart.s.shepard[j] / narrow.s.shepard[j], 1.0, 1e-13) << j;
     EXPECT_NEAR(apart.s.eps[j], narrow.s.eps[j], 1e-14) << j;
@@ -254,13 +254,13 @@ TEST(Coupling, SauterMeanDiameterAtSpheres) {
   for (std::size_t j = 0; j < s.size(); ++j) s.radius[j] = 6e-5;  // one size (halo copies too)
   c.pairs.build(f, s, c.scells);
   compute_fluid_voidage(f, s, c.pairs, 0.05);
-  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch);
+  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
   for (std::size_t j = 0; j < s.n_owned; ++j) EXPECT_NEAR(s.d_sauter[j], 1.2e-4, 1e-16);
   for (std::size_t j = 0; j < s.n_owned; ++j) s.radius[j] = (j % 2) ? 4e-5 : 8e-5;
   c.sh.fill(s.radius);
   c.pairs.build(f, s, c.scells);
   compute_fluid_voidage(f, s, c.pairs, 0.05);
-  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch);
+  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
   for (std::size_t j = 0; j < s.n_owned; ++j) {
     EXPECT_GT(s.d_sauter[j], 0.8e-4);
     EXPECT_LT(s.d_sauter[j], 1.6e-4);
@@ -282,7 +282,7 @@ TEST(Coupling, VariationalPressureForcesCancelPairByPair) {
     std::fill(f.ax.begin(), f.ax.end(), 0.0);
     std::fill(f.ay.begin(), f.ay.end(), 0.0);
     std::fill(f.az.begin(), f.az.end(), 0.0);
-    couple_pressure_variationally(f, s, c.pairs, c.sh.source(), c.scratch);
+    couple_pressure_variationally(f, s, c.pairs, c.sh, c.scratch);
     double sum[3] = {0, 0, 0}, scale = 0;
     for (std::size_t a = 0; a < f.n_owned; ++a) {
       const double m = f.mass[a];
@@ -325,7 +325,7 @@ TEST(Coupling, VariationalPressureForceIsBuoyancy) {
       f.P[a] = rho * g * (z_ref - f.z[a]);
     }
     c.pairs.build(f, s, c.scells);
-    couple_pressure_variationally(f, s, c.pairs, c.sh.source(), c.scratch);
+    couple_pressure_variationally(f, s, c.pairs, c.sh, c.scratch);
     int checked = 0;
     double worst = 0.0;
     for (std::size_t j = 0; j < s.n_owned; ++j) {
@@ -403,7 +403,7 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
     std::fill(f.ax.begin(), f.ax.end(), 0.0);
     std::fill(f.ay.begin(), f.ay.end(), 0.0);
     std::fill(f.az.begin(), f.az.end(), 0.0);
-    couple_pressure_variationally(f, s, c.pairs, c.sh.source(), c.scratch, ph);
+    couple_pressure_variationally(f, s, c.pairs, c.sh, c.scratch, ph);
     const std::vector<double> fax = f.ax, fay = f.ay, faz = f.az;
     const std::vector<double> sgx(s.gx.begin(), s.gx.begin() + s.n_owned),
         sgy(s.gy.begin(), s.gy.begin() + s.n_owned), sgz(s.gz.begin(), s.gz.begin() + s.n_owned);
@@ -571,7 +571,7 @@ TEST(Coupling, SphereSumsMatchBruteForceWithEitherInstructionSet) {
     std::vector<PairIsa> isas{PairIsa::kBaseline};
     if (best_pair_isa() == PairIsa::kAvx512) isas.push_back(PairIsa::kAvx512);
     for (PairIsa isa : isas) {
-      interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch, nullptr, isa);
+      interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch, nullptr, isa);
       int seen = 0;
       for (std::size_t j = 0; j < ns; ++j) {
         EXPECT_NEAR(s.shepard[j], S[j], 1e-13 * S[j]) << "sphere " << j;
@@ -583,7 +583,7 @@ TEST(Coupling, SphereSumsMatchBruteForceWithEitherInstructionSet) {
       }
       EXPECT_GE(seen, 30);
       std::fill(f.az.begin(), f.az.end(), 0.0);
-      interpolate_fluid_at_spheres(s, f, c.pairs, c.sh.source(), c.scratch, &ph, isa);
+      interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch, &ph, isa);
       for (std::size_t j = 0; j < ns; ++j) {
         const double scale = std::abs(Pg[0][j]) + std::abs(Pg[1][j]) + std::abs(Pg[2][j]) + 1.0;
         EXPECT_NEAR(s.gx[j], Pg[0][j], 1e-12 * scale) << "sphere " << j;
