@@ -21,8 +21,9 @@
 
 namespace sphdem {
 
-// The cost of a fluid row in a pass over these pairs, in entries (domain/row_partition.hpp).
-constexpr double kFluidRowCost = 8.0;
+// The cost of a fluid row in a pass over these pairs, in entries (domain/row_partition.hpp;
+// where the two threads' samples in these passes even out, bench/RESULTS.md).
+constexpr double kFluidRowCost = 32.0;
 
 struct FluidSpherePairs {
   NeighbourList list;  // Verlet list: rows owned SPH particles, entries sphere indices

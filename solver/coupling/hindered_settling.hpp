@@ -10,7 +10,8 @@
 
 namespace sphdem {
 
-inline double di_felice_hindered_settling(double d, double rho_p, double rho_f, double mu, double g, double eps) {
+inline double di_felice_hindered_settling(double d, double rho_p, double rho_f, double mu, double g,
+                                          double eps) {
   const double V = M_PI * d * d * d / 6.0;
   const double weight = eps * (rho_p - rho_f) * V * g;  // (rho_p - rho_av) V g
   const drag::Fluid fluid{rho_f, mu};

@@ -90,7 +90,9 @@ class DemSubstepper {
   // The cost of a sphere in its force pass, in contact-list entries: each thread takes
   // the spheres of one equal share (domain/row_partition.hpp) in every pass of a sub-step.
   double row_cost() const { return kContactRowCost + (p_.fluid_force ? kDragRowCost : 0.0); }
-  static constexpr double kDragRowCost = 12.0;  // a drag law's evaluation, in list entries
+  // a drag law's evaluation, the fluid force and the sub-step's update of one sphere, in
+  // list entries (where the two threads' samples in these passes even out, bench/RESULTS.md)
+  static constexpr double kDragRowCost = 40.0;
   template <class Contact, class Drag>
   void force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean, double weight,
                   double dt_springs);
