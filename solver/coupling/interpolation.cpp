@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include "domain/row_partition.hpp"
 #include "sph/pair_isa.hpp"
 
 namespace sphdem {
@@ -56,9 +57,10 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
   const double* __restrict wd = pairs.drag_w().data();
   const double* __restrict grad = pairs.grad.data();
   double walls_on_spheres_z = 0.0;
-  // Interleaved chunks (rows differ in length); per-thread sums stay deterministic.
-#pragma omp for schedule(static, 64)
-  for (long b = 0; b < nf; ++b) {
+  // rows differ in length: contiguous shares of equal entries (domain/row_partition.hpp),
+  // whose spheres' rows stay in the thread's cache
+  const auto [lo, hi] = thread_rows(pairs.list.offset, nf, kFluidRowCost);
+  for (std::size_t b = lo; b < hi; ++b) {
     const bool mobile = f.kind[b] == kFluid;
     if (!kPressure && !mobile) continue;
     Block q;
