@@ -7,8 +7,7 @@
 // kernel of their own size, h_j = c d_j (3.9), onto every SPH particle b:
 //   phi_b = sum_{j big} V_j W(r_bj, h_j),
 // and that solid fraction is smoothed again with the fluid kernel (3.10):
-//   eps_a = 1 - sum_{i small} V_i W(r_ai, h_a) - sum_b V_b phi_b W(r_ab, h_a) / sum_b V_b W(r_ab,
-//   h_a),
+//   eps_a = 1 - sum_{i small} V_i W_ai - sum_b V_b phi_b W_ab / sum_b V_b W_ab  (W at h_a),
 // V_b = m_b / rho_b. (3.10) prints V_BIG in the second sum; the volume of the SPH
 // particle b is what makes it a kernel interpolation of phi, and the Shepard
 // denominator keeps a uniform phi uniform next to the free surface.

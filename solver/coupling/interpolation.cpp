@@ -44,8 +44,8 @@ void stage_fluid(const FluidParticles& f, double* staged) {
   }
 }
 
-// Rows [b over the thread's chunks]: every pair adds its drag-weighted block and its
-// force part to the sphere's owner row; with kPressure the variational pairs (and the
+// The thread's share of the fluid rows: every pair adds its drag-weighted block and its
+// force part to the row of the sphere image; with kPressure the variational pairs (and the
 // fluid's own share of them, added to its acceleration), else m_b theta_b W_jb.
 template <bool kPressure>
 inline double scatter_rows(FluidParticles& f, const DemParticles& s, const FluidSpherePairs& pairs,
@@ -65,9 +65,9 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
     if (!kPressure && !mobile) continue;
     Block q;
     __builtin_memcpy(&q, staged + kWeighted * b, sizeof q);
-    const double xb = f.x[b], yb = f.y[b], zb = f.z[b];
-    const double vp = kPressure ? f.mass[b] / f.rho[b] * (f.P[b] - ph(zb)) : 0.0;  // V_b P_b
-    const double mb = f.mass[b];
+    const double xb = f.x[b], yb = f.y[b], zb = f.z[b], mb = f.mass[b];
+    const double p_dyn = kPressure ? f.P[b] - ph(zb) : 0.0;
+    const double vp = mb / f.rho[b] * p_dyn;  // V_b P_b
     const double mtx = mb * f.thx[b], mty = mb * f.thy[b], mtz = mb * f.thz[b];
     double gx = 0.0, gy = 0.0, gz = 0.0;  // sum_j V_j grad_b W_bj = -grad eps_b
     for (std::uint32_t k = pairs.begin(b); k < pairs.end(b); ++k) {
@@ -95,7 +95,7 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
         walls_on_spheres_z += vp * gz;
         continue;
       }
-      const double p_over_rho = (f.P[b] - ph(zb)) / f.rho[b];
+      const double p_over_rho = p_dyn / f.rho[b];
       f.ax[b] -= p_over_rho * gx;
       f.ay[b] -= p_over_rho * gy;
       f.az[b] -=
@@ -153,8 +153,8 @@ double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
       s.eps[j] = 1.0;
       s.ufx[j] = s.ufy[j] = s.ufz[j] = 0.0;
     }
-    if (pressure) {  // sum_a V_a P_a grad_a W_aj: the pressure force / V_j, + the buoyancy -grad
-                     // P_h
+    // the pressure force / V_j, sum_a V_a P_a grad_a W_aj, and the buoyancy -grad P_h
+    if (pressure) {
       s.gx[j] = sum(kGx);
       s.gy[j] = sum(kGy);
       s.gz[j] = sum(kGz) - pressure->gradient_z();
