@@ -176,19 +176,25 @@ inline ContactRow contact_row(const DemParticles& s, const ContactNeighbourList&
     return normal_contact_row(s, list, model.normal, bf, images, wall_z, i);
 }
 
-// Stores a row as the contact pass's output: (cx,cy,cz), overlap_max, and with a
-// history model the torque (tx,ty,tz).
+// Stores what a row gives besides its force: with a history model the torque
+// (tx,ty,tz), and overlap_max. The DEM sub-step adds the force to the acceleration.
 template <class Model>
-inline void store_contact_row(DemParticles& s, std::size_t i, const ContactRow& row) {
-  s.cx[i] = row.fx;
-  s.cy[i] = row.fy;
-  s.cz[i] = row.fz;
+inline void store_torque_and_overlap(DemParticles& s, std::size_t i, const ContactRow& row) {
   if constexpr (Model::kHistory) {
     s.tx[i] = row.qx;
     s.ty[i] = row.qy;
     s.tz[i] = row.qz;
   }
   s.overlap_max[i] = row.overlap;
+}
+
+// Stores a row as the contact pass's output: the force (cx,cy,cz), the torque and the overlap.
+template <class Model>
+inline void store_contact_row(DemParticles& s, std::size_t i, const ContactRow& row) {
+  s.cx[i] = row.fx;
+  s.cy[i] = row.fy;
+  s.cz[i] = row.fz;
+  store_torque_and_overlap<Model>(s, i, row);
 }
 
 }  // namespace sphdem

@@ -6,7 +6,6 @@
 #include <type_traits>
 #include <variant>
 
-#include "coupling/drag_coefficients.hpp"
 #include "coupling/fluid_force.hpp"
 #include "domain/reorder.hpp"
 #include "domain/row_partition.hpp"
@@ -57,6 +56,7 @@ void DemSubstepper::rebuild_lists() {
     contacts_.build(s, cells_, skin);
   }
   if (p_.rotation) history_.load(s, contacts_);
+  drift_ = 0.0;
   ++list_builds_;
 }
 
@@ -142,17 +142,19 @@ namespace {
 struct NoFluid {};  // a dry scene: no fluid force to evaluate
 }  // namespace
 
-// One pass over the owned spheres: each one's contact row (2.36), its fluid force (2.68)
-// and its acceleration (2.35), so that a sub-step streams the sphere arrays once.
+// One pass over the owned spheres, in blocks that stay in the cache: the block's fluid
+// forces (2.68, in lanes), then each sphere's contact row (2.36) and its acceleration
+// (2.35), so that a sub-step streams the sphere arrays once.
 template <class Contact, class Drag>
 void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean,
                                double weight, double dt_springs) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
   if constexpr (Contact::kHistory) history_.require_aligned(contacts_, s.n_owned);
+  constexpr bool kFluid = !std::is_same_v<Drag, NoFluid>;
   const double bf = contact.normal.beta_factor();
   const HaloImages images = halo_.images();
-  const bool variational = p_.variational;
+  const FluidForceWindow window{accumulate_mean, weight, p_.variational};
   const auto& g = p_.gravity;
   const drag::Fluid& fluid = p_.fluid;
   double* const drag_c = drag_c_.data();
@@ -161,34 +163,22 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
 #pragma omp parallel if (n > kMinParallelSpheres) reduction(max : rate_max)
   {
     const auto [begin, end] = thread_rows(contacts_.offset, n, row_cost());
-    if constexpr (!std::is_same_v<Drag, NoFluid>) {
-      drag_coefficients(drag, s, fluid, begin, end, drag_c, isa);
-      // d f / d v = -c eps (f = c u_s, u_s = eps (u_f - v), 2.74): the relaxation rate
-      for (std::size_t j = begin; j < end; ++j)
-        rate_max = std::max(rate_max, drag_c[j] * s.eps[j] / s.mass[j]);
-    }
-    for (std::size_t j = begin; j < end; ++j) {
-      const ContactRow c =
-          contact_row(s, contacts_, contact, bf, history_, images, 0.0, dt_springs, j);
-      store_contact_row<Contact>(s, j, c);
-      double fx = 0, fy = 0, fz = 0;
-      if constexpr (!std::is_same_v<Drag, NoFluid>) {
-        fluid_force_on_sphere(s, j, drag_c[j], fx, fy, fz);
-        if (accumulate_mean) {  // trapezoidal impulse of this sub-step: 0.5 dt (f_old + f_new)
-          // (with the variational coupling the constant pressure part 2 V g is not in it)
-          const double vp2 = variational ? 2.0 * s.volume(j) : 0.0;
-          s.fmx[j] += weight * (s.fx[j] + fx - vp2 * s.gx[j]);
-          s.fmy[j] += weight * (s.fy[j] + fy - vp2 * s.gy[j]);
-          s.fmz[j] += weight * (s.fz[j] + fz - vp2 * s.gz[j]);
-        }
-        s.fx[j] = fx;
-        s.fy[j] = fy;
-        s.fz[j] = fz;
+    for (std::size_t block = begin; block < end; block += kForceBlock) {
+      const std::size_t block_end = std::min(end, block + kForceBlock);
+      if constexpr (kFluid)
+        rate_max =
+            std::max(rate_max, fluid_forces(drag, s, fluid, block, block_end, window, drag_c, isa));
+      for (std::size_t j = block; j < block_end; ++j) {
+        const ContactRow c =
+            contact_row(s, contacts_, contact, bf, history_, images, 0.0, dt_springs, j);
+        store_torque_and_overlap<Contact>(s, j, c);
+        const double fx = kFluid ? s.fx[j] : 0.0, fy = kFluid ? s.fy[j] : 0.0,
+                     fz = kFluid ? s.fz[j] : 0.0;
+        const double inv_m = 1.0 / s.mass[j];
+        s.ax[j] = (c.fx + fx) * inv_m + g[0];
+        s.ay[j] = (c.fy + fy) * inv_m + g[1];
+        s.az[j] = (c.fz + fz) * inv_m + g[2];
       }
-      const double inv_m = 1.0 / s.mass[j];
-      s.ax[j] = (c.fx + fx) * inv_m + g[0];
-      s.ay[j] = (c.fy + fy) * inv_m + g[1];
-      s.az[j] = (c.fz + fz) * inv_m + g[2];
     }
   }
   drag_rate_max_ = rate_max;
@@ -265,9 +255,9 @@ void DemSubstepper::half_step(double dt, bool first_half) {
   a_old_y_.resize(n);
   a_old_z_.resize(n);
   for (int k = 0; k < per_half; ++k) {
-    double max_disp2 = 0.0;
+    double max_step2 = 0.0;
     const double finish = k > 0 ? 0.5 * h : 0.0;  // the previous sub-step's corrector, fused
-#pragma omp parallel reduction(max : max_disp2) if (n > kMinParallelSpheres)
+#pragma omp parallel reduction(max : max_step2) if (n > kMinParallelSpheres)
     for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j) {
       // v_n + h (a_old + a_new)/2 of the sub-step before (below for the last one)
       s.vx[j] += finish * (s.ax[j] - a_old_x_[j]);
@@ -276,24 +266,27 @@ void DemSubstepper::half_step(double dt, bool first_half) {
       // x += h (v + h a/2); v -> v + h a_old, the predicted end-of-step velocity at which
       // the velocity-dependent forces (dashpot, drag) are evaluated: second order, where
       // the half-step velocity would make the dashpot first order (e_n off by ~eta h/2).
-      s.x[j] += h * (s.vx[j] + 0.5 * h * s.ax[j]);
-      s.y[j] += h * (s.vy[j] + 0.5 * h * s.ay[j]);
-      s.z[j] += h * (s.vz[j] + 0.5 * h * s.az[j]);
+      const double dx = h * (s.vx[j] + 0.5 * h * s.ax[j]);
+      const double dy = h * (s.vy[j] + 0.5 * h * s.ay[j]);
+      const double dz = h * (s.vz[j] + 0.5 * h * s.az[j]);
+      s.x[j] += dx;
+      s.y[j] += dy;
+      s.z[j] += dz;
+      max_step2 = std::max(max_step2, dx * dx + dy * dy + dz * dz);
       s.vx[j] += h * s.ax[j];
       s.vy[j] += h * s.ay[j];
       s.vz[j] += h * s.az[j];
       a_old_x_[j] = s.ax[j];
       a_old_y_[j] = s.ay[j];
       a_old_z_[j] = s.az[j];
-      const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
-      max_disp2 = std::max(max_disp2, dx * dx + dy * dy + dz * dz);
     }
+    drift_ += std::sqrt(max_step2);
     if (p_.rotation) {
       if (k > 0) correct_spin(s, h, torque_old_);
       predict_spin(s, h, torque_old_);
     }
     // (the contact passes read halo neighbours through their owned source: no fill here)
-    if (max_disp2 > half_skin * half_skin) rebuild_lists();
+    if (drift_ > half_skin) rebuild_lists();
     forces(true, 0.5 * h / dt, h);
   }
 #pragma omp parallel if (n > kMinParallelSpheres)

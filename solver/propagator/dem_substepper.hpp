@@ -93,6 +93,9 @@ class DemSubstepper {
   // a drag law's evaluation, the fluid force and the sub-step's update of one sphere, in
   // list entries (where the two threads' samples in these passes even out, bench/RESULTS.md)
   static constexpr double kDragRowCost = 40.0;
+  // spheres per block of the force pass: the fluid forces of a block are still in the
+  // cache when its contact rows add them to the accelerations
+  static constexpr std::size_t kForceBlock = 256;
   template <class Contact, class Drag>
   void force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean, double weight,
                   double dt_springs);
@@ -114,6 +117,10 @@ class DemSubstepper {
   int n_groups_ = 0;
   double dt_ = 0;
   double drag_rate_max_ = 0;  // sets the next half step's sub-step with dt_max
+  // the sum over the sub-steps since the last list build of the largest step any sphere
+  // took: a bound on every sphere's displacement (the Verlet skin's test without reading
+  // the positions at the build)
+  double drift_ = 0;
   int substeps_ = 0;
   long list_builds_ = 0;
 };

@@ -11,8 +11,8 @@
 #include <variant>
 #include <vector>
 
-#include "coupling/drag_coefficients.hpp"
 #include "coupling/drag_laws.hpp"
+#include "coupling/fluid_force.hpp"
 
 namespace {
 
@@ -242,11 +242,14 @@ TEST(DragLaw, BeetstraPolydisperseMatchesThesisForm) {
 }
 
 // The DEM force pass reads each sphere's coefficient from one pass over the spheres
-// (coupling/drag_coefficients.hpp): the baseline loop gives the law's own value bit for
+// (coupling/fluid_force.hpp): the baseline loop gives the law's own value bit for
 // bit, the AVX-512 lanes (libmvec's exp, log10, pow) the same to a few ulp, for every law,
 // over slips from creeping to Re ~ 500 in any direction, voidages 0.4-1, mixed sizes, a
 // range that does not start at a multiple of eight, and spheres no fluid reaches (c = 0).
-TEST(DragLaw, CoefficientsPassMatchesTheLawWithEitherInstructionSet) {
+namespace {
+// 203 spheres over slips from creeping to Re ~ 500 in any direction, voidages 0.4-1, mixed
+// sizes, some no fluid reaches (Shepard sum 0).
+sphdem::DemParticles drag_test_spheres() {
   sphdem::DemParticles s;
   const std::size_t n = 203;
   s.resize(n);
@@ -264,7 +267,24 @@ TEST(DragLaw, CoefficientsPassMatchesTheLawWithEitherInstructionSet) {
     s.vx[j] = 0.1 * speed * std::cos(3.0 * t);
     s.vy[j] = 0.0;
     s.vz[j] = j % 13 == 0 ? speed : -0.5 * speed;  // some without any slip along z
+    // for the fluid force: a pressure gradient, the force of the sub-step before, a mean
+    s.mass[j] = 2500.0 * s.volume(j);
+    s.gx[j] = 30.0 * std::sin(0.9 * t);
+    s.gy[j] = -20.0;
+    s.gz[j] = 9810.0 * (1.0 + 0.1 * std::cos(t));
+    s.fx[j] = 1e-9 * std::cos(t);
+    s.fy[j] = -2e-9;
+    s.fz[j] = 3e-9 * std::sin(t);
+    s.fmx[j] = 1e-12;
+    s.fmy[j] = -1e-12;
   }
+  return s;
+}
+}  // namespace
+
+TEST(DragLaw, CoefficientsPassMatchesTheLawWithEitherInstructionSet) {
+  const sphdem::DemParticles s = drag_test_spheres();
+  const std::size_t n = s.n_owned;
   const std::size_t begin = 3, end = n;
   for (std::size_t law_index = 0; law_index < std::size(kDragLawNames); ++law_index) {
     DragLaw law;
@@ -300,6 +320,73 @@ TEST(DragLaw, CoefficientsPassMatchesTheLawWithEitherInstructionSet) {
                     << kDragLawNames[law_index] << " sphere " << j;
             }
           }
+        },
+        law);
+  }
+}
+
+// The DEM sub-step's fluid force pass (2.68): for every law and both instruction sets, the
+// force V g + c eps (u_f - v) with the pass's own c (checked against the law above), the
+// trapezoid's share w (f_old + f_new - 2 V g [variational]) added to fm, the largest
+// relaxation rate c eps / m; no force on a sphere no fluid reaches, nothing outside the range.
+TEST(DragLaw, FluidForcePassMatchesEq268WithEitherInstructionSet) {
+  const sphdem::DemParticles s0 = drag_test_spheres();
+  const std::size_t n = s0.n_owned, begin = 5, end = n - 2;
+  for (std::size_t law_index = 0; law_index < std::size(kDragLawNames); ++law_index) {
+    DragLaw law;
+    ASSERT_TRUE(drag_law_from_name(kDragLawNames[law_index], law));
+    std::visit(
+        [&](const auto& l) {
+          for (auto isa : {sphdem::PairIsa::kBaseline, sphdem::best_pair_isa()})
+            for (const sphdem::FluidForceWindow window :
+                 {sphdem::FluidForceWindow{false, 0.0, false},
+                  sphdem::FluidForceWindow{true, 0.25, false},
+                  sphdem::FluidForceWindow{true, 0.5, true}}) {
+              sphdem::DemParticles s = s0;
+              std::vector<double> c(n, -1.0);
+              const double rate =
+                  sphdem::fluid_forces(l, s, kWater, begin, end, window, c.data(), isa);
+              double rate_expected = 0.0;
+              for (std::size_t j = 0; j < n; ++j) {
+                const double f_new[3] = {s.fx[j], s.fy[j], s.fz[j]};
+                const double f_old[3] = {s0.fx[j], s0.fy[j], s0.fz[j]};
+                const double fm[3] = {s.fmx[j], s.fmy[j], s.fmz[j]};
+                const double fm_old[3] = {s0.fmx[j], s0.fmy[j], s0.fmz[j]};
+                if (j < begin || j >= end) {  // outside the range: untouched
+                  EXPECT_EQ(c[j], -1.0);
+                  for (int d = 0; d < 3; ++d) {
+                    EXPECT_EQ(f_new[d], f_old[d]);
+                    EXPECT_EQ(fm[d], fm_old[d]);
+                  }
+                  continue;
+                }
+                const bool reached = s0.shepard[j] > 0.0;
+                const double e = s0.eps[j], V = s0.volume(j);
+                const double g[3] = {s0.gx[j], s0.gy[j], s0.gz[j]};
+                const double us[3] = {e * (s0.ufx[j] - s0.vx[j]), e * (s0.ufy[j] - s0.vy[j]),
+                                      e * (s0.ufz[j] - s0.vz[j])};
+                const double us_mag = std::sqrt(us[0] * us[0] + us[1] * us[1] + us[2] * us[2]);
+                const double c_law = reached ? drag_coefficient(l, e, us_mag, 2.0 * s0.radius[j],
+                                                                s0.d_sauter[j], kWater)
+                                             : 0.0;
+                EXPECT_NEAR(c[j], c_law, 1e-13 * c_law) << kDragLawNames[law_index] << " " << j;
+                rate_expected = std::max(rate_expected, c_law * e / s0.mass[j]);
+                for (int d = 0; d < 3; ++d) {
+                  const double f = reached ? V * g[d] + c_law * us[d] : 0.0;
+                  const double scale = std::abs(V * g[d]) + std::abs(c_law * us[d]) + 1e-30;
+                  EXPECT_NEAR(f_new[d], f, 1e-12 * scale)
+                      << kDragLawNames[law_index] << " sphere " << j << " axis " << d;
+                  const double vp2 = window.variational ? 2.0 * V : 0.0;
+                  const double added =
+                      window.accumulate_mean ? window.weight * (f_old[d] + f - vp2 * g[d]) : 0.0;
+                  EXPECT_NEAR(fm[d], fm_old[d] + added,
+                              1e-12 * (std::abs(fm_old[d]) + std::abs(added) +
+                                       window.weight * (std::abs(f_old[d]) + 2.0 * scale)))
+                      << kDragLawNames[law_index] << " sphere " << j << " axis " << d;
+                }
+              }
+              EXPECT_NEAR(rate, rate_expected, 1e-12 * rate_expected);
+            }
         },
         law);
   }
