@@ -147,7 +147,7 @@ struct NoFluid {};  // a dry scene: no fluid force to evaluate
 // (2.35), so that a sub-step streams the sphere arrays once.
 template <class Contact, class Drag>
 void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean,
-                               double weight, double dt_springs) {
+                               double weight, double dt_springs, const Advance& advance) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
   if constexpr (Contact::kHistory) history_.require_aligned(contacts_, s.n_owned);
@@ -159,8 +159,15 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
   const drag::Fluid& fluid = p_.fluid;
   double* const drag_c = drag_c_.data();
   const PairIsa isa = isa_;
-  double rate_max = 0.0;
-#pragma omp parallel if (n > kMinParallelSpheres) reduction(max : rate_max)
+  const double h = advance.h;
+  double* const xn = x_next_.data();
+  double* const yn = y_next_.data();
+  double* const zn = z_next_.data();
+  double* const vxn = vx_next_.data();
+  double* const vyn = vy_next_.data();
+  double* const vzn = vz_next_.data();
+  double rate_max = 0.0, max_step2 = 0.0;
+#pragma omp parallel if (n > kMinParallelSpheres) reduction(max : rate_max, max_step2)
   {
     const auto [begin, end] = thread_rows(contacts_.offset, n, row_cost());
     for (std::size_t block = begin; block < end; block += kForceBlock) {
@@ -175,13 +182,38 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
         const double fx = kFluid ? s.fx[j] : 0.0, fy = kFluid ? s.fy[j] : 0.0,
                      fz = kFluid ? s.fz[j] : 0.0;
         const double inv_m = 1.0 / s.mass[j];
-        s.ax[j] = (c.fx + fx) * inv_m + g[0];
-        s.ay[j] = (c.fy + fy) * inv_m + g[1];
-        s.az[j] = (c.fz + fz) * inv_m + g[2];
+        const double ax = (c.fx + fx) * inv_m + g[0];
+        const double ay = (c.fy + fy) * inv_m + g[1];
+        const double az = (c.fz + fz) * inv_m + g[2];
+        if (advance.correct) {  // v_n + h (a_old + a_new)/2
+          const double vx = s.vx[j] + 0.5 * h * (ax - s.ax[j]);
+          const double vy = s.vy[j] + 0.5 * h * (ay - s.ay[j]);
+          const double vz = s.vz[j] + 0.5 * h * (az - s.az[j]);
+          if (advance.predict) {  // as substeps_apart's predictor
+            const double dx = h * (vx + 0.5 * h * ax);
+            const double dy = h * (vy + 0.5 * h * ay);
+            const double dz = h * (vz + 0.5 * h * az);
+            xn[j] = s.x[j] + dx;
+            yn[j] = s.y[j] + dy;
+            zn[j] = s.z[j] + dz;
+            max_step2 = std::max(max_step2, dx * dx + dy * dy + dz * dz);
+            vxn[j] = vx + h * ax;
+            vyn[j] = vy + h * ay;
+            vzn[j] = vz + h * az;
+          } else {
+            vxn[j] = vx;
+            vyn[j] = vy;
+            vzn[j] = vz;
+          }
+        }
+        s.ax[j] = ax;
+        s.ay[j] = ay;
+        s.az[j] = az;
       }
     }
   }
   drag_rate_max_ = rate_max;
+  max_step2_ = max_step2;
 }
 
 double DemSubstepper::fluid_drag_time() const {
@@ -202,22 +234,42 @@ double DemSubstepper::fluid_drag_time() const {
 
 // Rigid groups share their total force equally (thesis §4.5).
 void DemSubstepper::forces(bool accumulate_mean, double weight, double dt_springs) {
+  forces_advancing(accumulate_mean, weight, dt_springs, Advance{});
+}
+
+void DemSubstepper::forces_advancing(bool accumulate_mean, double weight, double dt_springs,
+                                     const Advance& advance) {
   DemParticles& s = s_;
   if (s.n_owned == 0) return;
   const long n = static_cast<long>(s.n_owned);
   if (p_.fluid_force) drag_c_.resize(s.n_owned);
+  if (advance.correct) {
+    for (auto* v : {&vx_next_, &vy_next_, &vz_next_}) v->resize(s.size());
+    if (advance.predict)
+      for (auto* x : {&x_next_, &y_next_, &z_next_}) x->resize(s.size());
+  }
   std::visit(
       [&](const auto& contact) {
         if (!p_.fluid_force)
-          force_rows(contact, NoFluid{}, accumulate_mean, weight, dt_springs);
+          force_rows(contact, NoFluid{}, accumulate_mean, weight, dt_springs, advance);
         else
           std::visit(
               [&](const auto& drag) {
-                force_rows(contact, drag, accumulate_mean, weight, dt_springs);
+                force_rows(contact, drag, accumulate_mean, weight, dt_springs, advance);
               },
               p_.drag);
       },
       p_.law);
+  if (advance.correct) {  // the next sub-step's arrays become the current ones
+    std::swap(s.vx, vx_next_);
+    std::swap(s.vy, vy_next_);
+    std::swap(s.vz, vz_next_);
+    if (advance.predict) {
+      std::swap(s.x, x_next_);
+      std::swap(s.y, y_next_);
+      std::swap(s.z, z_next_);
+    }
+  }
   if (n_groups_ == 0) return;
   sum_over_rigid_groups([&](long j, double& fx, double& fy, double& fz) {
     fx = s.ax[j] * s.mass[j];
@@ -240,7 +292,6 @@ void DemSubstepper::forces(bool accumulate_mean, double weight, double dt_spring
 void DemSubstepper::half_step(double dt, bool first_half) {
   DemParticles& s = s_;
   if (s.n_owned == 0) return;
-  const long n = static_cast<long>(s.n_owned);
   // dt_max (contacts, Stokes time) and the drag relaxation at the last force pass
   const double drag_bound =
       drag_rate_max_ > 0.0 ? p_.drag_time_fraction / drag_rate_max_ : p_.dt_max;
@@ -250,11 +301,61 @@ void DemSubstepper::half_step(double dt, bool first_half) {
   dt_ = h;
   substeps_ = 2 * per_half;
   if (!first_half) clear_mean_force();  // start the window of the next mean force
-  const double half_skin = 0.5 * contacts_.skin;
+  if (!p_.rotation && n_groups_ == 0)
+    substeps_fused(h, per_half, 0.5 * h / dt);
+  else
+    substeps_apart(h, per_half, 0.5 * h / dt);
+  // the halo copies as the fluid passes read them
+  halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
+  s.for_each_field([&](const FieldInfo& field, auto& v) {
+    if (field.refreshed()) halo_.fill(v);
+  });
+}
+
+void DemSubstepper::drifted(double max_step2) {
+  drift_ += std::sqrt(max_step2);
+  if (drift_ > 0.5 * contacts_.skin) rebuild_lists();
+}
+
+// x += h (v + h a/2); v -> v + h a_old, the predicted end-of-step velocity at which the
+// velocity-dependent forces (dashpot, drag) are evaluated: second order, where the
+// half-step velocity would make the dashpot first order (e_n off by ~eta h/2). Returns
+// the step's length squared.
+static inline double predict(DemParticles& s, std::size_t j, double h) {
+  const double dx = h * (s.vx[j] + 0.5 * h * s.ax[j]);
+  const double dy = h * (s.vy[j] + 0.5 * h * s.ay[j]);
+  const double dz = h * (s.vz[j] + 0.5 * h * s.az[j]);
+  s.x[j] += dx;
+  s.y[j] += dy;
+  s.z[j] += dz;
+  s.vx[j] += h * s.ax[j];
+  s.vy[j] += h * s.ay[j];
+  s.vz[j] += h * s.az[j];
+  return dx * dx + dy * dy + dz * dz;
+}
+
+void DemSubstepper::substeps_fused(double h, int count, double weight) {
+  DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
+  double max_step2 = 0.0;
+#pragma omp parallel reduction(max : max_step2) if (n > kMinParallelSpheres)
+  for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j)
+    max_step2 = std::max(max_step2, predict(s, j, h));
+  drifted(max_step2);
+  for (int k = 0; k < count; ++k) {
+    const bool last = k + 1 == count;  // its corrector ends the half step
+    forces_advancing(true, weight, h, Advance{true, !last, h});
+    if (!last) drifted(max_step2_);
+  }
+}
+
+void DemSubstepper::substeps_apart(double h, int count, double weight) {
+  DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
   a_old_x_.resize(n);
   a_old_y_.resize(n);
   a_old_z_.resize(n);
-  for (int k = 0; k < per_half; ++k) {
+  for (int k = 0; k < count; ++k) {
     double max_step2 = 0.0;
     const double finish = k > 0 ? 0.5 * h : 0.0;  // the previous sub-step's corrector, fused
 #pragma omp parallel reduction(max : max_step2) if (n > kMinParallelSpheres)
@@ -263,31 +364,18 @@ void DemSubstepper::half_step(double dt, bool first_half) {
       s.vx[j] += finish * (s.ax[j] - a_old_x_[j]);
       s.vy[j] += finish * (s.ay[j] - a_old_y_[j]);
       s.vz[j] += finish * (s.az[j] - a_old_z_[j]);
-      // x += h (v + h a/2); v -> v + h a_old, the predicted end-of-step velocity at which
-      // the velocity-dependent forces (dashpot, drag) are evaluated: second order, where
-      // the half-step velocity would make the dashpot first order (e_n off by ~eta h/2).
-      const double dx = h * (s.vx[j] + 0.5 * h * s.ax[j]);
-      const double dy = h * (s.vy[j] + 0.5 * h * s.ay[j]);
-      const double dz = h * (s.vz[j] + 0.5 * h * s.az[j]);
-      s.x[j] += dx;
-      s.y[j] += dy;
-      s.z[j] += dz;
-      max_step2 = std::max(max_step2, dx * dx + dy * dy + dz * dz);
-      s.vx[j] += h * s.ax[j];
-      s.vy[j] += h * s.ay[j];
-      s.vz[j] += h * s.az[j];
+      max_step2 = std::max(max_step2, predict(s, j, h));
       a_old_x_[j] = s.ax[j];
       a_old_y_[j] = s.ay[j];
       a_old_z_[j] = s.az[j];
     }
-    drift_ += std::sqrt(max_step2);
     if (p_.rotation) {
       if (k > 0) correct_spin(s, h, torque_old_);
       predict_spin(s, h, torque_old_);
     }
     // (the contact passes read halo neighbours through their owned source: no fill here)
-    if (drift_ > half_skin) rebuild_lists();
-    forces(true, 0.5 * h / dt, h);
+    drifted(max_step2);
+    forces(true, weight, h);
   }
 #pragma omp parallel if (n > kMinParallelSpheres)
   for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j) {
@@ -297,11 +385,6 @@ void DemSubstepper::half_step(double dt, bool first_half) {
     s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[j]);
   }
   if (p_.rotation) correct_spin(s, h, torque_old_);
-  // the halo copies as the fluid passes read them
-  halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
-  s.for_each_field([&](const FieldInfo& field, auto& v) {
-    if (field.refreshed()) halo_.fill(v);
-  });
 }
 
 void DemSubstepper::write_state(CheckpointWriter& w) const {

@@ -96,9 +96,28 @@ class DemSubstepper {
   // spheres per block of the force pass: the fluid forces of a block are still in the
   // cache when its contact rows add them to the accelerations
   static constexpr std::size_t kForceBlock = 256;
+  // What the force pass does with a sphere once it has its new acceleration a: nothing
+  // (the sub-step's passes apart), or the corrector v += h/2 (a - a_old) and, with
+  // `predict`, the next sub-step's predictor (x += h (v + h a / 2), v += h a), both into the
+  // next buffers (the rows still to come read this sub-step's x and v).
+  struct Advance {
+    bool correct = false, predict = false;
+    double h = 0;
+  };
+  void forces_advancing(bool accumulate_mean, double weight, double dt_springs,
+                        const Advance& advance);
   template <class Contact, class Drag>
   void force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean, double weight,
-                  double dt_springs);
+                  double dt_springs, const Advance& advance);
+  // The sub-steps of a half step with the corrector and predictor in the force pass: one
+  // pass over the spheres per sub-step (without rotation and rigid groups).
+  void substeps_fused(double h, int count, double weight);
+  // ... and with the predictor a pass of its own (the spin's predictor and the rigid
+  // groups' shared force come between)
+  void substeps_apart(double h, int count, double weight);
+  // Adds the largest step of a predictor to the drift, and rebuilds the lists once the
+  // drift may have used up half the skin.
+  void drifted(double max_step2);
 
   Box box_;
   DemStepParams p_;
@@ -109,6 +128,9 @@ class DemSubstepper {
   ContactHistory history_;
   FluidReach reach_;
   std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // accelerations of the previous sub-step
+  std::vector<double> x_next_, y_next_, z_next_;     // positions and velocities of the
+  std::vector<double> vx_next_, vy_next_, vz_next_;  // next sub-step (fused passes)
+  double max_step2_ = 0;  // the largest predictor step squared of the last fused pass
   std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // g before a variational coupling pass
   std::vector<double> drag_c_;     // drag coefficient of each sphere in this force pass (scratch)
   PairIsa isa_ = best_pair_isa();  // the drag coefficients' instruction set
