@@ -301,9 +301,11 @@ void DemSubstepper::half_step(double dt, bool first_half) {
   dt_ = h;
   substeps_ = 2 * per_half;
   if (!first_half) clear_mean_force();  // start the window of the next mean force
-  if (!p_.rotation && n_groups_ == 0)
-    substeps_fused(h, per_half, 0.5 * h / dt);
-  else
+  ++tally_.half_steps;
+  if (!p_.rotation && n_groups_ == 0) {
+    if (!(p_.multirate && substeps_multirate(dt, h, per_half)))
+      substeps_fused(h, per_half, 0.5 * h / dt);
+  } else
     substeps_apart(h, per_half, 0.5 * h / dt);
   // the halo copies as the fluid passes read them
   halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
@@ -314,7 +316,20 @@ void DemSubstepper::half_step(double dt, bool first_half) {
 
 void DemSubstepper::drifted(double max_step2) {
   drift_ += std::sqrt(max_step2);
+  if (drift_ > 0.5 * contacts_.skin) drift_ = displacement_since_build();
   if (drift_ > 0.5 * contacts_.skin) rebuild_lists();
+}
+
+double DemSubstepper::displacement_since_build() const {
+  const DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
+  double max_disp2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : max_disp2) if (n > kMinParallelSpheres)
+  for (long j = 0; j < n; ++j) {
+    const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
+    max_disp2 = std::max(max_disp2, dx * dx + dy * dy + dz * dz);
+  }
+  return std::sqrt(max_disp2);
 }
 
 // x += h (v + h a/2); v -> v + h a_old, the predicted end-of-step velocity at which the
@@ -334,6 +349,20 @@ static inline double predict(DemParticles& s, std::size_t j, double h) {
   return dx * dx + dy * dy + dz * dz;
 }
 
+// The sub-step before's corrector v_n + h (a_old + a_new)/2 (finish = h/2; 0 before the
+// first), then this one's predictor; a_old takes the acceleration the step starts from.
+static inline double correct_and_predict(DemParticles& s, std::size_t j, double finish, double h,
+                                         double& aox, double& aoy, double& aoz) {
+  s.vx[j] += finish * (s.ax[j] - aox);
+  s.vy[j] += finish * (s.ay[j] - aoy);
+  s.vz[j] += finish * (s.az[j] - aoz);
+  const double step2 = predict(s, j, h);
+  aox = s.ax[j];
+  aoy = s.ay[j];
+  aoz = s.az[j];
+  return step2;
+}
+
 void DemSubstepper::substeps_fused(double h, int count, double weight) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
@@ -349,6 +378,195 @@ void DemSubstepper::substeps_fused(double h, int count, double weight) {
   }
 }
 
+// Multi-rate sub-steps (the r-RESPA idea, Tuckerman, Berne & Martyna 1992). A sphere whose
+// neighbours and wall are all farther than a margin m at the start of the half step feels
+// no contact in it as long as no sphere moves m/2 or more: it takes the step of its fluid
+// force and gravity (free_dt_max and the drag's relaxation bound), the spheres near a
+// contact take the contact sub-steps. m is time.multirate_margin times the largest distance
+// a sphere would cover at the start's speeds and accelerations; if any sphere moved m/2 or
+// more (a bound: the sums of the largest steps), the half step starts again from the saved
+// state with every sphere sub-stepped. Both kinds add their trapezoids to fm over the same
+// window.
+bool DemSubstepper::substeps_multirate(double dt, double h, int count) {
+  DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
+  const double T = 0.5 * dt;
+  const double free_bound = std::min(
+      p_.free_dt_max, drag_rate_max_ > 0.0 ? p_.drag_time_fraction / drag_rate_max_ : p_.dt_max);
+  const int free_count = std::max(1, static_cast<int>(std::ceil(T / free_bound)));
+  if (2 * free_count > count) return false;  // little to gain
+  double v2 = 0.0, a2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : v2, a2) if (n > kMinParallelSpheres)
+  for (long j = 0; j < n; ++j) {
+    v2 = std::max(v2, s.vx[j] * s.vx[j] + s.vy[j] * s.vy[j] + s.vz[j] * s.vz[j]);
+    a2 = std::max(a2, s.ax[j] * s.ax[j] + s.ay[j] * s.ay[j] + s.az[j] * s.az[j]);
+  }
+  const double margin = p_.multirate_margin * (std::sqrt(v2) * T + 0.5 * std::sqrt(a2) * T * T);
+  if (drift_ + 0.5 * margin > 0.5 * contacts_.skin) drift_ = displacement_since_build();
+  if (drift_ + 0.5 * margin > 0.5 * contacts_.skin) rebuild_lists();  // the list must last
+  if (0.5 * margin > 0.5 * contacts_.skin) return false;
+  // the spheres within the margin of a contact (each pair is in both rows)
+  const HaloImages images = halo_.images();
+  near_.clear();
+  for (long i = 0; i < n; ++i) {
+    bool near = s.z[i] - s.radius[i] < margin;  // the wall at z = 0
+    for (std::uint32_t k = contacts_.offset[i]; !near && k < contacts_.offset[i + 1]; ++k) {
+      double dx, dy, dz;
+      const std::size_t j = owned_image(images, contacts_.neighbour[k], s.x[i], s.y[i], s.z[i], s.x,
+                                        s.y, s.z, dx, dy, dz);
+      const double reach = s.radius[i] + s.radius[j] + margin;
+      near = dx * dx + dy * dy + dz * dz < reach * reach;
+    }
+    if (near) near_.push_back(static_cast<std::uint32_t>(i));
+  }
+  if (2 * near_.size() > s.n_owned) return false;  // mostly in contact
+  std::vector<double>* const state[] = {&s.x,  &s.y,  &s.z,  &s.vx, &s.vy,  &s.vz,  &s.ax, &s.ay,
+                                        &s.az, &s.fx, &s.fy, &s.fz, &s.fmx, &s.fmy, &s.fmz};
+  constexpr int kState = 15;
+  saved_.resize(kState * n);
+  for (int f = 0; f < kState; ++f)
+    std::copy(state[f]->begin(), state[f]->begin() + n, saved_.begin() + f * n);
+  const double drift_at_start = drift_;
+  double free_reach = 0.0, near_reach = 0.0, rate_free = 0.0, rate_near = 0.0;
+  std::visit(
+      [&](const auto& drag) {
+        for (int k = 0; k < free_count; ++k) {
+          const double hf = T / free_count;
+          free_reach += std::sqrt(free_step(drag, hf, 0.5 * hf / dt, k == 0));
+          rate_free = drag_rate_max_;
+        }
+        // the near spheres back to the start, then sub-stepped
+        for (int f = 0; f < kState; ++f)
+          for (const std::uint32_t j : near_) (*state[f])[j] = saved_[f * n + j];
+        std::visit(
+            [&](const auto& contact) {
+              near_reach = near_substeps(contact, drag, h, count, 0.5 * h / dt);
+            },
+            p_.law);
+        rate_near = drag_rate_max_;
+      },
+      p_.drag);
+  const double reach = std::max(free_reach, near_reach);
+  if (2.0 * reach >= margin) {  // a sphere may have met another: back to the start
+    for (int f = 0; f < kState; ++f)
+      std::copy(saved_.begin() + f * n, saved_.begin() + (f + 1) * n, state[f]->begin());
+    drift_ = drift_at_start;
+    ++tally_.sent_back;
+    return false;
+  }
+  ++tally_.multirate;
+  tally_.near_spheres += static_cast<double>(near_.size());
+  tally_.owned_spheres += static_cast<double>(n);
+  drift_ += reach;
+  drag_rate_max_ = std::max(rate_free, rate_near);
+  return true;
+}
+
+// One velocity-Verlet step of length h of every sphere under its fluid force and gravity
+// alone (the near ones are put back after it); returns the largest step squared. `fresh`
+// (the first of a half step): the step starts from the force in the fluid fields of this
+// evaluation, not the last sub-step's in the previous ones (a sub-step would feel those
+// for h, this step for h_free: its x would lag by h_free^2 / 2 times the change).
+template <class Drag>
+double DemSubstepper::free_step(const Drag& drag, double h, double weight, bool fresh) {
+  DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
+  drag_c_.resize(s.n_owned);
+  const FluidForceWindow window{true, weight, p_.variational};
+  const auto& g = p_.gravity;
+  double* const drag_c = drag_c_.data();
+  double max_step2 = 0.0, rate_max = 0.0;
+#pragma omp parallel if (n > kMinParallelSpheres) reduction(max : max_step2, rate_max)
+  {
+    const auto [begin, end] = thread_rows({}, n, 1.0);
+    double aox[kForceBlock], aoy[kForceBlock], aoz[kForceBlock];
+    for (std::size_t block = begin; block < end; block += kForceBlock) {
+      const std::size_t block_end = std::min(end, block + kForceBlock);
+      if (fresh) {
+        fluid_forces(drag, s, p_.fluid, block, block_end, FluidForceWindow{}, drag_c, isa_);
+        for (std::size_t j = block; j < block_end; ++j) {
+          const double inv_m = 1.0 / s.mass[j];
+          s.ax[j] = s.fx[j] * inv_m + g[0];
+          s.ay[j] = s.fy[j] * inv_m + g[1];
+          s.az[j] = s.fz[j] * inv_m + g[2];
+        }
+      }
+      for (std::size_t j = block; j < block_end; ++j) {
+        aox[j - block] = s.ax[j];
+        aoy[j - block] = s.ay[j];
+        aoz[j - block] = s.az[j];
+        max_step2 = std::max(max_step2, predict(s, j, h));
+        s.overlap_max[j] = 0.0;
+      }
+      rate_max = std::max(rate_max,
+                          fluid_forces(drag, s, p_.fluid, block, block_end, window, drag_c, isa_));
+      for (std::size_t j = block; j < block_end; ++j) {
+        const double inv_m = 1.0 / s.mass[j];
+        s.ax[j] = s.fx[j] * inv_m + g[0];
+        s.ay[j] = s.fy[j] * inv_m + g[1];
+        s.az[j] = s.fz[j] * inv_m + g[2];
+        s.vx[j] += 0.5 * h * (s.ax[j] - aox[j - block]);  // v_n + h (a_old + a_new)/2
+        s.vy[j] += 0.5 * h * (s.ay[j] - aoy[j - block]);
+        s.vz[j] += 0.5 * h * (s.az[j] - aoz[j - block]);
+      }
+    }
+  }
+  drag_rate_max_ = rate_max;
+  return max_step2;
+}
+
+// The contact sub-steps of the near spheres (as substeps_apart's, over their list); their
+// neighbours out of reach stand where their own step left them. Returns the sum over the
+// sub-steps of the largest step.
+template <class Contact, class Drag>
+double DemSubstepper::near_substeps(const Contact& contact, const Drag& drag, double h, int count,
+                                    double weight) {
+  DemParticles& s = s_;
+  const long m = static_cast<long>(near_.size());
+  const std::uint32_t* const near = near_.data();
+  a_old_x_.resize(m);
+  a_old_y_.resize(m);
+  a_old_z_.resize(m);
+  const double bf = contact.normal.beta_factor();
+  const HaloImages images = halo_.images();
+  const FluidForceWindow window{true, weight, p_.variational};
+  const auto& g = p_.gravity;
+  double* const drag_c = drag_c_.data();
+  double reach = 0.0, rate_max = 0.0;
+  for (int k = 0; k < count; ++k) {
+    const double finish = k > 0 ? 0.5 * h : 0.0;  // the previous sub-step's corrector
+    double max_step2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : max_step2) if (m > kMinParallelSpheres)
+    for (long q = 0; q < m; ++q) {
+      max_step2 = std::max(max_step2, correct_and_predict(s, near[q], finish, h, a_old_x_[q],
+                                                          a_old_y_[q], a_old_z_[q]));
+    }
+    reach += std::sqrt(max_step2);
+    rate_max = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : rate_max) if (m > kMinParallelSpheres)
+    for (long q = 0; q < m; ++q) {
+      const std::size_t j = near[q];
+      rate_max = std::max(
+          rate_max, fluid_forces(drag, s, p_.fluid, j, j + 1, window, drag_c, PairIsa::kBaseline));
+      const ContactRow c = contact_row(s, contacts_, contact, bf, history_, images, 0.0, h, j);
+      store_torque_and_overlap<Contact>(s, j, c);
+      const double inv_m = 1.0 / s.mass[j];
+      s.ax[j] = (c.fx + s.fx[j]) * inv_m + g[0];
+      s.ay[j] = (c.fy + s.fy[j]) * inv_m + g[1];
+      s.az[j] = (c.fz + s.fz[j]) * inv_m + g[2];
+    }
+  }
+#pragma omp parallel for schedule(static) if (m > kMinParallelSpheres)
+  for (long q = 0; q < m; ++q) {
+    const std::size_t j = near[q];
+    s.vx[j] += 0.5 * h * (s.ax[j] - a_old_x_[q]);
+    s.vy[j] += 0.5 * h * (s.ay[j] - a_old_y_[q]);
+    s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[q]);
+  }
+  drag_rate_max_ = rate_max;
+  return reach;
+}
+
 void DemSubstepper::substeps_apart(double h, int count, double weight) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
@@ -360,14 +578,9 @@ void DemSubstepper::substeps_apart(double h, int count, double weight) {
     const double finish = k > 0 ? 0.5 * h : 0.0;  // the previous sub-step's corrector, fused
 #pragma omp parallel reduction(max : max_step2) if (n > kMinParallelSpheres)
     for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j) {
-      // v_n + h (a_old + a_new)/2 of the sub-step before (below for the last one)
-      s.vx[j] += finish * (s.ax[j] - a_old_x_[j]);
-      s.vy[j] += finish * (s.ay[j] - a_old_y_[j]);
-      s.vz[j] += finish * (s.az[j] - a_old_z_[j]);
-      max_step2 = std::max(max_step2, predict(s, j, h));
-      a_old_x_[j] = s.ax[j];
-      a_old_y_[j] = s.ay[j];
-      a_old_z_[j] = s.az[j];
+      // (the last sub-step's corrector below)
+      max_step2 = std::max(
+          max_step2, correct_and_predict(s, j, finish, h, a_old_x_[j], a_old_y_[j], a_old_z_[j]));
     }
     if (p_.rotation) {
       if (k > 0) correct_spin(s, h, torque_old_);

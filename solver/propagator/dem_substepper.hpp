@@ -3,6 +3,7 @@
 // list, the contact history, and the velocity-Verlet sub-steps over half an SPH step with
 // the fluid fields at the spheres held (physics.md §4). The coupled step (simulation.hpp)
 // writes the fluid fields at the spheres and reads back their mean force fm.
+#include <cstdint>
 #include <vector>
 
 #include "dem/contact_forces.hpp"
@@ -24,6 +25,15 @@ namespace sphdem {
 // spheres (double smoothing's big spheres, 3.9), which the contact skin extends.
 struct FluidReach {
   double needed = 0, wanted = 0, sphere_kernel = 0;
+};
+
+// How the half steps went with time.multirate (printed at the end of a run).
+struct MultirateTally {
+  long half_steps = 0;       // with spheres
+  long multirate = 0;        // of which the spheres out of contact took the fluid's step
+  long sent_back = 0;        // tried, and started again with every sphere sub-stepped
+  double near_spheres = 0;   // summed over the multirate half steps: the spheres sub-stepped
+  double owned_spheres = 0;  // ... and all of them
 };
 
 class DemSubstepper {
@@ -51,6 +61,7 @@ class DemSubstepper {
   // (infinity without drag): a bound on the SPH step.
   double fluid_drag_time() const;
   int substeps() const { return substeps_; }  // per SPH step
+  const MultirateTally& multirate_tally() const { return tally_; }
   // Sphere halo and contact list builds so far: a list into the halo is stale once it changes.
   long list_builds() const { return list_builds_; }
 
@@ -112,12 +123,23 @@ class DemSubstepper {
   // The sub-steps of a half step with the corrector and predictor in the force pass: one
   // pass over the spheres per sub-step (without rotation and rigid groups).
   void substeps_fused(double h, int count, double weight);
+  // Spheres out of contact take the fluid's step, the others the contact sub-steps; false
+  // where that does not pay or cannot be trusted (the half step is then as it was).
+  bool substeps_multirate(double dt, double h, int count);
+  template <class Drag>
+  double free_step(const Drag& drag, double h, double weight, bool fresh);
+  template <class Contact, class Drag>
+  double near_substeps(const Contact& contact, const Drag& drag, double h, int count,
+                       double weight);
   // ... and with the predictor a pass of its own (the spin's predictor and the rigid
   // groups' shared force come between)
   void substeps_apart(double h, int count, double weight);
   // Adds the largest step of a predictor to the drift, and rebuilds the lists once the
-  // drift may have used up half the skin.
+  // drift has used up half the skin: where the bound says it may have, the drift becomes
+  // the largest displacement since the build (in a bed the spheres' largest steps do not
+  // add up to anyone's displacement).
   void drifted(double max_step2);
+  double displacement_since_build() const;
 
   Box box_;
   DemStepParams p_;
@@ -130,7 +152,10 @@ class DemSubstepper {
   std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // accelerations of the previous sub-step
   std::vector<double> x_next_, y_next_, z_next_;     // positions and velocities of the
   std::vector<double> vx_next_, vy_next_, vz_next_;  // next sub-step (fused passes)
-  double max_step2_ = 0;  // the largest predictor step squared of the last fused pass
+  double max_step2_ = 0;             // the largest predictor step squared of the last fused pass
+  std::vector<std::uint32_t> near_;  // multirate: the spheres near a contact
+  std::vector<double> saved_;        // multirate: the state at the start of the half step
+  MultirateTally tally_;
   std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // g before a variational coupling pass
   std::vector<double> drag_c_;     // drag coefficient of each sphere in this force pass (scratch)
   PairIsa isa_ = best_pair_isa();  // the drag coefficients' instruction set
@@ -139,9 +164,9 @@ class DemSubstepper {
   int n_groups_ = 0;
   double dt_ = 0;
   double drag_rate_max_ = 0;  // sets the next half step's sub-step with dt_max
-  // the sum over the sub-steps since the last list build of the largest step any sphere
-  // took: a bound on every sphere's displacement (the Verlet skin's test without reading
-  // the positions at the build)
+  // a bound on every sphere's displacement since the last list build: the largest
+  // displacement when last measured plus the largest step of each sub-step since (the
+  // Verlet skin's test without reading the positions at the build every sub-step)
   double drift_ = 0;
   int substeps_ = 0;
   long list_builds_ = 0;

@@ -47,6 +47,7 @@ class Simulation {
   double dt_dem_max() const { return params_.dem.dt_max; }
   double fluid_drag_fraction() const { return params_.fluid.fluid_drag_fraction; }
   int dem_substeps() const { return dem_.substeps(); }
+  const MultirateTally& multirate_tally() const { return dem_.multirate_tally(); }
   double contact_time() const { return params_.dem.contact_time; }
   const Scene& scene() const { return scene_; }
   const StepParams& params() const { return params_; }

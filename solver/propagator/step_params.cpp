@@ -54,6 +54,9 @@ StepParams compile_step_params(const Scene& scene) {
   const DemTimeStep ts = dem_time_step(scene);
   d.contact_time = ts.contact_time;
   d.dt_max = ts.dt_max;
+  d.free_dt_max = ts.free_dt_max;
+  d.multirate = scene.time.multirate && scene.fluid.enabled;
+  d.multirate_margin = scene.time.multirate_margin;
   try {
     d.law = make_contact_law(
         ContactParams{scene.contact.normal, scene.contact.tangential, scene.contact.rolling});

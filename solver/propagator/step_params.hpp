@@ -49,6 +49,9 @@ struct DemStepParams {
   bool rotation = false;  // tangential or rolling parts: contact history and spin on
   double skin = 0.3;      // contact Verlet skin / largest diameter
   double contact_time = 0, dt_max = 0;  // scene/time_step.hpp
+  double free_dt_max = 0;               // (scene/time_step.hpp) with multirate
+  bool multirate = false;               // time.multirate
+  double multirate_margin = 4;          // time.multirate_margin
   // A sub-step also stays below this fraction of the shortest drag relaxation time
   // m / (c eps) at the spheres' own voidage and Reynolds number (as dt_max does of the
   // Stokes time): a sediment's drag is ~10 times Stokes'.

@@ -351,6 +351,12 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
                                           "(contact.stiffness) or a slower impact",
                                           scene.contact.max_overlap)
                             : fmt::format(" (contact.max_overlap {})", scene.contact.max_overlap));
+  if (const MultirateTally& m = sim.multirate_tally(); scene.time.multirate && m.half_steps > 0)
+    *out << fmt::format(
+        "sphdem: time.multirate: the spheres out of contact took the fluid's step in {} of {} DEM "
+        "half steps ({:.2g} % of the spheres sub-stepped in those); {} tried and sent back\n",
+        m.multirate, m.half_steps, 100.0 * m.near_spheres / std::max(m.owned_spheres, 1.0),
+        m.sent_back);
   if (r.stopped_by)
     *out << fmt::format(
         "sphdem: stopped at t = {:.6g} s (step {}); checkpoint {}. Continue with: sphdem resume "

@@ -82,7 +82,12 @@ struct TimeSpec {
   double end = 0.02;                  // simulated time after release (s)
   double cfl = 0.25;                  // dt_SPH <= cfl h / v_sig (eq. 3.5 with support 2h)
   double dem_steps_per_contact = 20;  // dt_DEM <= t_c / this (eq. 3.7)
-  double max_dt_sph = 1e-3;           // upper cap (s)
+  // Spheres out of contact take the drag's step, not the contact's (DemSubstepper)
+  bool multirate = true;
+  // ... unless a neighbour or the wall is within this many times the farthest a sphere
+  // goes in a half step at its start's speed and acceleration (below 2: always sent back)
+  double multirate_margin = 4;
+  double max_dt_sph = 1e-3;  // upper cap (s)
 };
 
 struct StartupSpec {

@@ -680,6 +680,8 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
     sc.time.cfl = r.number("cfl", sc.time.cfl, 0.0, 1.0, true);
     sc.time.dem_steps_per_contact =
         r.number("dem_steps_per_contact", sc.time.dem_steps_per_contact, 5.0, 1000.0);
+    sc.time.multirate = r.boolean("multirate", sc.time.multirate);
+    sc.time.multirate_margin = r.number("multirate_margin", sc.time.multirate_margin, 0.0, 100.0);
     sc.time.max_dt_sph = r.number("max_dt_sph", sc.time.max_dt_sph, 0.0, kInf, true);
     r.finish();
   }
@@ -981,7 +983,9 @@ std::string scene_to_yaml(const Scene& sc) {
   e << YAML::Key << "time" << YAML::Value << YAML::BeginMap << YAML::Key << "end" << YAML::Value
     << sc.time.end << YAML::Key << "cfl" << YAML::Value << sc.time.cfl << YAML::Key
     << "dem_steps_per_contact" << YAML::Value << sc.time.dem_steps_per_contact << YAML::Key
-    << "max_dt_sph" << YAML::Value << sc.time.max_dt_sph << YAML::EndMap;
+    << "multirate" << YAML::Value << sc.time.multirate << YAML::Key << "multirate_margin"
+    << YAML::Value << sc.time.multirate_margin << YAML::Key << "max_dt_sph" << YAML::Value
+    << sc.time.max_dt_sph << YAML::EndMap;
   e << YAML::Key << "startup" << YAML::Value << YAML::BeginMap << YAML::Key << "relax_steps"
     << YAML::Value << sc.startup.relax_steps << YAML::Key << "damping" << YAML::Value
     << sc.startup.damping << YAML::EndMap;

@@ -49,7 +49,8 @@ DemTimeStep dem_time_step(const Scene& scene) {
                                                          (masses[a] + masses[b]) / kt));
     }
   }
-  return {t_contact, std::min(t_contact / scene.time.dem_steps_per_contact, 0.1 * t_drag)};
+  return {t_contact, std::min(t_contact / scene.time.dem_steps_per_contact, 0.1 * t_drag),
+          0.1 * t_drag};
 }
 
 }  // namespace sphdem

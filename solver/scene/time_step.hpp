@@ -9,6 +9,7 @@ namespace sphdem {
 struct DemTimeStep {
   double contact_time = 0;  // shortest t_c (2.44), or the sticking period with friction
   double dt_max = 0;        // min(t_c / time.dem_steps_per_contact, 0.1 m/(3 pi mu d))
+  double free_dt_max = 0;   // 0.1 m/(3 pi mu d): a sphere in no contact
 };
 
 // Throws SceneError naming contact.damping for an overdamped pair.
