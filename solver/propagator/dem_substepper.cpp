@@ -146,8 +146,8 @@ struct NoFluid {};  // a dry scene: no fluid force to evaluate
 // forces (2.68, in lanes), then each sphere's contact row (2.36) and its acceleration
 // (2.35), so that a sub-step streams the sphere arrays once.
 template <class Contact, class Drag>
-void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean,
-                               double weight, double dt_springs, const Advance& advance) {
+double DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean,
+                                 double weight, double dt_springs, const Advance& advance) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
   if constexpr (Contact::kHistory) history_.require_aligned(contacts_, s.n_owned);
@@ -213,7 +213,7 @@ void DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool ac
     }
   }
   drag_rate_max_ = rate_max;
-  max_step2_ = max_step2;
+  return max_step2;
 }
 
 double DemSubstepper::fluid_drag_time() const {
@@ -237,10 +237,10 @@ void DemSubstepper::forces(bool accumulate_mean, double weight, double dt_spring
   forces_advancing(accumulate_mean, weight, dt_springs, Advance{});
 }
 
-void DemSubstepper::forces_advancing(bool accumulate_mean, double weight, double dt_springs,
-                                     const Advance& advance) {
+double DemSubstepper::forces_advancing(bool accumulate_mean, double weight, double dt_springs,
+                                       const Advance& advance) {
   DemParticles& s = s_;
-  if (s.n_owned == 0) return;
+  if (s.n_owned == 0) return 0.0;
   const long n = static_cast<long>(s.n_owned);
   if (p_.fluid_force) drag_c_.resize(s.n_owned);
   if (advance.correct) {
@@ -248,14 +248,15 @@ void DemSubstepper::forces_advancing(bool accumulate_mean, double weight, double
     if (advance.predict)
       for (auto* x : {&x_next_, &y_next_, &z_next_}) x->resize(s.size());
   }
+  double max_step2 = 0.0;
   std::visit(
       [&](const auto& contact) {
         if (!p_.fluid_force)
-          force_rows(contact, NoFluid{}, accumulate_mean, weight, dt_springs, advance);
+          max_step2 = force_rows(contact, NoFluid{}, accumulate_mean, weight, dt_springs, advance);
         else
           std::visit(
               [&](const auto& drag) {
-                force_rows(contact, drag, accumulate_mean, weight, dt_springs, advance);
+                max_step2 = force_rows(contact, drag, accumulate_mean, weight, dt_springs, advance);
               },
               p_.drag);
       },
@@ -270,7 +271,7 @@ void DemSubstepper::forces_advancing(bool accumulate_mean, double weight, double
       std::swap(s.z, z_next_);
     }
   }
-  if (n_groups_ == 0) return;
+  if (n_groups_ == 0) return max_step2;
   sum_over_rigid_groups([&](long j, double& fx, double& fy, double& fz) {
     fx = s.ax[j] * s.mass[j];
     fy = s.ay[j] * s.mass[j];
@@ -283,6 +284,7 @@ void DemSubstepper::forces_advancing(bool accumulate_mean, double weight, double
     s.ay[j] = group_fy_[gr] / group_m_[gr];
     s.az[j] = group_fz_[gr] / group_m_[gr];
   }
+  return max_step2;
 }
 
 // Velocity-Verlet sub-steps with the fluid fields at the spheres held fixed (physics.md
@@ -373,8 +375,8 @@ void DemSubstepper::substeps_fused(double h, int count, double weight) {
   drifted(max_step2);
   for (int k = 0; k < count; ++k) {
     const bool last = k + 1 == count;  // its corrector ends the half step
-    forces_advancing(true, weight, h, Advance{true, !last, h});
-    if (!last) drifted(max_step2_);
+    const double step2 = forces_advancing(true, weight, h, Advance{true, !last, h});
+    if (!last) drifted(step2);
   }
 }
 

@@ -115,11 +115,12 @@ class DemSubstepper {
     bool correct = false, predict = false;
     double h = 0;
   };
-  void forces_advancing(bool accumulate_mean, double weight, double dt_springs,
-                        const Advance& advance);
+  // returns the largest predictor step squared (0 without `predict`)
+  double forces_advancing(bool accumulate_mean, double weight, double dt_springs,
+                          const Advance& advance);
   template <class Contact, class Drag>
-  void force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean, double weight,
-                  double dt_springs, const Advance& advance);
+  double force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean, double weight,
+                    double dt_springs, const Advance& advance);
   // The sub-steps of a half step with the corrector and predictor in the force pass: one
   // pass over the spheres per sub-step (without rotation and rigid groups).
   void substeps_fused(double h, int count, double weight);
@@ -152,9 +153,8 @@ class DemSubstepper {
   std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // accelerations of the previous sub-step
   std::vector<double> x_next_, y_next_, z_next_;     // positions and velocities of the
   std::vector<double> vx_next_, vy_next_, vz_next_;  // next sub-step (fused passes)
-  double max_step2_ = 0;             // the largest predictor step squared of the last fused pass
-  std::vector<std::uint32_t> near_;  // multirate: the spheres near a contact
-  std::vector<double> saved_;        // multirate: the state at the start of the half step
+  std::vector<std::uint32_t> near_;                  // multirate: the spheres near a contact
+  std::vector<double> saved_;  // multirate: the state at the start of the half step
   MultirateTally tally_;
   std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // g before a variational coupling pass
   std::vector<double> drag_c_;     // drag coefficient of each sphere in this force pass (scratch)
