@@ -166,6 +166,9 @@ double DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool 
   double* const vxn = vx_next_.data();
   double* const vyn = vy_next_.data();
   double* const vzn = vz_next_.data();
+  double* const wxn = wx_next_.data();
+  double* const wyn = wy_next_.data();
+  double* const wzn = wz_next_.data();
   double rate_max = 0.0, max_step2 = 0.0;
 #pragma omp parallel if (n > kMinParallelSpheres) reduction(max : rate_max, max_step2)
   {
@@ -178,6 +181,23 @@ double DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool 
       for (std::size_t j = block; j < block_end; ++j) {
         const ContactRow c =
             contact_row(s, contacts_, contact, bf, history_, images, 0.0, dt_springs, j);
+        if constexpr (Contact::kHistory) {
+          if (advance.correct) {  // the spin as the velocity (rotation.hpp), tau_old = t
+            const double I = s.inertia(j), cc = 0.5 * h / I;
+            double wx = s.wx[j] + cc * (c.qx - s.tx[j]);
+            double wy = s.wy[j] + cc * (c.qy - s.ty[j]);
+            double wz = s.wz[j] + cc * (c.qz - s.tz[j]);
+            if (advance.predict) {
+              const double cp = h / I;
+              wx += cp * c.qx;
+              wy += cp * c.qy;
+              wz += cp * c.qz;
+            }
+            wxn[j] = wx;
+            wyn[j] = wy;
+            wzn[j] = wz;
+          }
+        }
         store_torque_and_overlap<Contact>(s, j, c);
         const double fx = kFluid ? s.fx[j] : 0.0, fy = kFluid ? s.fy[j] : 0.0,
                      fz = kFluid ? s.fz[j] : 0.0;
@@ -245,6 +265,8 @@ double DemSubstepper::forces_advancing(bool accumulate_mean, double weight, doub
   if (p_.fluid_force) drag_c_.resize(s.n_owned);
   if (advance.correct) {
     for (auto* v : {&vx_next_, &vy_next_, &vz_next_}) v->resize(s.size());
+    if (p_.rotation)
+      for (auto* w : {&wx_next_, &wy_next_, &wz_next_}) w->resize(s.size());
     if (advance.predict)
       for (auto* x : {&x_next_, &y_next_, &z_next_}) x->resize(s.size());
   }
@@ -265,6 +287,11 @@ double DemSubstepper::forces_advancing(bool accumulate_mean, double weight, doub
     std::swap(s.vx, vx_next_);
     std::swap(s.vy, vy_next_);
     std::swap(s.vz, vz_next_);
+    if (p_.rotation) {
+      std::swap(s.wx, wx_next_);
+      std::swap(s.wy, wy_next_);
+      std::swap(s.wz, wz_next_);
+    }
     if (advance.predict) {
       std::swap(s.x, x_next_);
       std::swap(s.y, y_next_);
@@ -304,7 +331,7 @@ void DemSubstepper::half_step(double dt, bool first_half) {
   substeps_ = 2 * per_half;
   if (!first_half) clear_mean_force();  // start the window of the next mean force
   ++tally_.half_steps;
-  if (!p_.rotation && n_groups_ == 0) {
+  if (n_groups_ == 0) {
     if (!(p_.multirate && substeps_multirate(dt, h, per_half)))
       substeps_fused(h, per_half, 0.5 * h / dt);
   } else
@@ -369,9 +396,12 @@ void DemSubstepper::substeps_fused(double h, int count, double weight) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
   double max_step2 = 0.0;
+  const bool spin = p_.rotation;
 #pragma omp parallel reduction(max : max_step2) if (n > kMinParallelSpheres)
-  for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j)
+  for (auto [j, end] = thread_rows(contacts_.offset, n, row_cost()); j < end; ++j) {
     max_step2 = std::max(max_step2, predict(s, j, h));
+    if (spin) kick_spin_of(s, j, h);
+  }
   drifted(max_step2);
   for (int k = 0; k < count; ++k) {
     const bool last = k + 1 == count;  // its corrector ends the half step
@@ -422,12 +452,31 @@ bool DemSubstepper::substeps_multirate(double dt, double h, int count) {
     if (near) near_.push_back(static_cast<std::uint32_t>(i));
   }
   if (2 * near_.size() > s.n_owned) return false;  // mostly in contact
-  std::vector<double>* const state[] = {&s.x,  &s.y,  &s.z,  &s.vx, &s.vy,  &s.vz,  &s.ax, &s.ay,
-                                        &s.az, &s.fx, &s.fy, &s.fz, &s.fmx, &s.fmy, &s.fmz};
-  constexpr int kState = 15;
-  saved_.resize(kState * n);
-  for (int f = 0; f < kState; ++f)
+  std::vector<double>* const state[] = {&s.x,   &s.y,  &s.z,  &s.vx, &s.vy, &s.vz,  &s.ax,
+                                        &s.ay,  &s.az, &s.fx, &s.fy, &s.fz, &s.fmx, &s.fmy,
+                                        &s.fmz, &s.wx, &s.wy, &s.wz, &s.tx, &s.ty,  &s.tz};
+  const int n_state = p_.rotation ? 21 : 15;  // the last six: spin and torque
+  saved_.resize(n_state * n);
+  for (int f = 0; f < n_state; ++f)
     std::copy(state[f]->begin(), state[f]->begin() + n, saved_.begin() + f * n);
+  // the near spheres' contact history (only their rows advance it)
+  const auto near_history = [&](bool save) {
+    std::size_t q = 0;
+    if (save) history_saved_.clear();
+    for (const std::uint32_t i : near_) {
+      const std::uint32_t a = contacts_.offset[i], b = contacts_.offset[i + 1];
+      if (save) {
+        history_saved_.insert(history_saved_.end(), history_.pair.begin() + a,
+                              history_.pair.begin() + b);
+        history_saved_.push_back(history_.wall[i]);
+      } else {
+        std::copy_n(history_saved_.begin() + q, b - a, history_.pair.begin() + a);
+        history_.wall[i] = history_saved_[q + (b - a)];
+      }
+      q += b - a + 1;
+    }
+  };
+  if (p_.rotation) near_history(true);
   const double drift_at_start = drift_;
   double free_reach = 0.0, near_reach = 0.0, rate_free = 0.0, rate_near = 0.0;
   std::visit(
@@ -438,7 +487,7 @@ bool DemSubstepper::substeps_multirate(double dt, double h, int count) {
           rate_free = drag_rate_max_;
         }
         // the near spheres back to the start, then sub-stepped
-        for (int f = 0; f < kState; ++f)
+        for (int f = 0; f < n_state; ++f)
           for (const std::uint32_t j : near_) (*state[f])[j] = saved_[f * n + j];
         std::visit(
             [&](const auto& contact) {
@@ -450,8 +499,9 @@ bool DemSubstepper::substeps_multirate(double dt, double h, int count) {
       p_.drag);
   const double reach = std::max(free_reach, near_reach);
   if (2.0 * reach >= margin) {  // a sphere may have met another: back to the start
-    for (int f = 0; f < kState; ++f)
+    for (int f = 0; f < n_state; ++f)
       std::copy(saved_.begin() + f * n, saved_.begin() + (f + 1) * n, state[f]->begin());
+    if (p_.rotation) near_history(false);
     drift_ = drift_at_start;
     ++tally_.sent_back;
     return false;
@@ -529,6 +579,14 @@ double DemSubstepper::near_substeps(const Contact& contact, const Drag& drag, do
   a_old_x_.resize(m);
   a_old_y_.resize(m);
   a_old_z_.resize(m);
+  constexpr bool kSpin = Contact::kHistory;
+  OldTorque& t_old = torque_old_;
+  if constexpr (kSpin) {
+    history_.require_aligned(contacts_, s.n_owned);
+    t_old.x.resize(m);
+    t_old.y.resize(m);
+    t_old.z.resize(m);
+  }
   const double bf = contact.normal.beta_factor();
   const HaloImages images = halo_.images();
   const FluidForceWindow window{true, weight, p_.variational};
@@ -540,8 +598,16 @@ double DemSubstepper::near_substeps(const Contact& contact, const Drag& drag, do
     double max_step2 = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : max_step2) if (m > kMinParallelSpheres)
     for (long q = 0; q < m; ++q) {
-      max_step2 = std::max(max_step2, correct_and_predict(s, near[q], finish, h, a_old_x_[q],
-                                                          a_old_y_[q], a_old_z_[q]));
+      const std::size_t j = near[q];
+      max_step2 = std::max(
+          max_step2, correct_and_predict(s, j, finish, h, a_old_x_[q], a_old_y_[q], a_old_z_[q]));
+      if constexpr (kSpin) {  // as predict_spin and correct_spin
+        if (k > 0) correct_spin_of(s, j, h, t_old.x[q], t_old.y[q], t_old.z[q]);
+        t_old.x[q] = s.tx[j];
+        t_old.y[q] = s.ty[j];
+        t_old.z[q] = s.tz[j];
+        kick_spin_of(s, j, h);
+      }
     }
     reach += std::sqrt(max_step2);
     rate_max = 0.0;
@@ -564,6 +630,7 @@ double DemSubstepper::near_substeps(const Contact& contact, const Drag& drag, do
     s.vx[j] += 0.5 * h * (s.ax[j] - a_old_x_[q]);
     s.vy[j] += 0.5 * h * (s.ay[j] - a_old_y_[q]);
     s.vz[j] += 0.5 * h * (s.az[j] - a_old_z_[q]);
+    if constexpr (kSpin) correct_spin_of(s, j, h, t_old.x[q], t_old.y[q], t_old.z[q]);
   }
   drag_rate_max_ = rate_max;
   return reach;

@@ -110,7 +110,8 @@ class DemSubstepper {
   // What the force pass does with a sphere once it has its new acceleration a: nothing
   // (the sub-step's passes apart), or the corrector v += h/2 (a - a_old) and, with
   // `predict`, the next sub-step's predictor (x += h (v + h a / 2), v += h a), both into the
-  // next buffers (the rows still to come read this sub-step's x and v).
+  // next buffers (the rows still to come read this sub-step's x and v); the spin likewise
+  // with the torque (rotation.hpp).
   struct Advance {
     bool correct = false, predict = false;
     double h = 0;
@@ -121,8 +122,9 @@ class DemSubstepper {
   template <class Contact, class Drag>
   double force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean, double weight,
                     double dt_springs, const Advance& advance);
-  // The sub-steps of a half step with the corrector and predictor in the force pass: one
-  // pass over the spheres per sub-step (without rotation and rigid groups).
+  // The sub-steps of a half step with the corrector and predictor (of the velocity and
+  // the spin) in the force pass: one pass over the spheres per sub-step (without rigid
+  // groups).
   void substeps_fused(double h, int count, double weight);
   // Spheres out of contact take the fluid's step, the others the contact sub-steps; false
   // where that does not pay or cannot be trusted (the half step is then as it was).
@@ -132,8 +134,8 @@ class DemSubstepper {
   template <class Contact, class Drag>
   double near_substeps(const Contact& contact, const Drag& drag, double h, int count,
                        double weight);
-  // ... and with the predictor a pass of its own (the spin's predictor and the rigid
-  // groups' shared force come between)
+  // ... and with the predictor a pass of its own (the rigid groups' shared force comes
+  // between)
   void substeps_apart(double h, int count, double weight);
   // Adds the largest step of a predictor to the drift, and rebuilds the lists once the
   // drift has used up half the skin: where the bound says it may have, the drift becomes
@@ -153,8 +155,10 @@ class DemSubstepper {
   std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // accelerations of the previous sub-step
   std::vector<double> x_next_, y_next_, z_next_;     // positions and velocities of the
   std::vector<double> vx_next_, vy_next_, vz_next_;  // next sub-step (fused passes)
+  std::vector<double> wx_next_, wy_next_, wz_next_;  // ... and spins
   std::vector<std::uint32_t> near_;                  // multirate: the spheres near a contact
-  std::vector<double> saved_;  // multirate: the state at the start of the half step
+  std::vector<double> saved_;                // multirate: the state at the start of the half step
+  std::vector<ContactState> history_saved_;  // ... and the near spheres' contact history
   MultirateTally tally_;
   std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // g before a variational coupling pass
   std::vector<double> drag_c_;     // drag coefficient of each sphere in this force pass (scratch)
