@@ -18,9 +18,10 @@
 
 namespace sphdem {
 
-inline std::pair<std::size_t, std::size_t> thread_rows(const std::vector<std::uint32_t>& offset,
-                                                       std::size_t n, double row_cost) {
-  const int threads = omp_get_num_threads(), t = omp_get_thread_num();
+// The range of share t of `threads`.
+inline std::pair<std::size_t, std::size_t> row_range(const std::vector<std::uint32_t>& offset,
+                                                     std::size_t n, double row_cost, int t,
+                                                     int threads) {
   if (threads == 1) return {0, n};
   const bool listed = offset.size() == n + 1;  // else equal counts
   const auto cost = [&](std::size_t i) {
@@ -42,6 +43,11 @@ inline std::pair<std::size_t, std::size_t> thread_rows(const std::vector<std::ui
     return lo;
   };
   return {boundary(t), boundary(t + 1)};
+}
+
+inline std::pair<std::size_t, std::size_t> thread_rows(const std::vector<std::uint32_t>& offset,
+                                                       std::size_t n, double row_cost) {
+  return row_range(offset, n, row_cost, omp_get_thread_num(), omp_get_num_threads());
 }
 
 }  // namespace sphdem

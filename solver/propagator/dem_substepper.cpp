@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "coupling/fluid_force.hpp"
+#include "domain/measured_shares.hpp"
 #include "domain/reorder.hpp"
 #include "domain/row_partition.hpp"
 #include "io/particle_state.hpp"
@@ -170,9 +171,18 @@ double DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool 
   double* const wyn = wy_next_.data();
   double* const wzn = wz_next_.data();
   double rate_max = 0.0, max_step2 = 0.0;
+  // Dry: the shares follow the measured times (every row the same bits on any thread).
+  // With fluid the drag's lanes start at each share's first sphere: fixed shares keep the
+  // bits of two threads from run to run.
+  MeasuredShares& shares = measured_shares_;
+  if constexpr (!kFluid)
+    shares.prepare(contacts_.offset, n, row_cost(),
+                   n > kMinParallelSpheres ? omp_get_max_threads() : 1);
 #pragma omp parallel if (n > kMinParallelSpheres) reduction(max : rate_max, max_step2)
   {
-    const auto [begin, end] = thread_rows(contacts_.offset, n, row_cost());
+    const double start = kFluid ? 0.0 : omp_get_wtime();
+    const auto [begin, end] = kFluid ? thread_rows(contacts_.offset, n, row_cost())
+                                     : shares.rows(contacts_.offset, row_cost());
     for (std::size_t block = begin; block < end; block += kForceBlock) {
       const std::size_t block_end = std::min(end, block + kForceBlock);
       if constexpr (kFluid)
@@ -231,7 +241,9 @@ double DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool 
         s.az[j] = az;
       }
     }
+    if constexpr (!kFluid) shares.record(omp_get_wtime() - start);
   }
+  if constexpr (!kFluid) shares.rebalance();
   drag_rate_max_ = rate_max;
   return max_step2;
 }

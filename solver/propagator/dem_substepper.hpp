@@ -13,6 +13,7 @@
 #include "dem/rotation.hpp"
 #include "domain/box.hpp"
 #include "domain/cell_list.hpp"
+#include "domain/measured_shares.hpp"
 #include "domain/periodic_halo.hpp"
 #include "io/checkpoint_file.hpp"
 #include "propagator/step_params.hpp"
@@ -161,9 +162,10 @@ class DemSubstepper {
   std::vector<ContactState> history_saved_;  // ... and the near spheres' contact history
   MultirateTally tally_;
   std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // g before a variational coupling pass
-  std::vector<double> drag_c_;     // drag coefficient of each sphere in this force pass (scratch)
-  PairIsa isa_ = best_pair_isa();  // the drag coefficients' instruction set
-  OldTorque torque_old_;           // torques of the previous sub-step
+  std::vector<double> drag_c_;      // drag coefficient of each sphere in this force pass (scratch)
+  PairIsa isa_ = best_pair_isa();   // the drag coefficients' instruction set
+  MeasuredShares measured_shares_;  // the dry force pass's rows per thread
+  OldTorque torque_old_;            // torques of the previous sub-step
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
   int n_groups_ = 0;
   double dt_ = 0;

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "domain/measured_shares.hpp"
 #include "propagator/simulation.hpp"
 #include "scene/scene.hpp"
 
@@ -83,6 +84,37 @@ TEST(RowPartition, OneThreadTakesEveryRowAndNoListMeansEqualCounts) {
   for (int t = 0; t < 4; ++t) EXPECT_EQ(s[t].second - s[t].first, n / 4) << t;
   const auto empty = shares(offsets({}), 0, 4.0, 2);
   for (const auto& r : empty) EXPECT_EQ(r.first, r.second);
+}
+
+// Rows whose cost the list does not show (the first fifth ten times the rest, with equal
+// entries): from the estimate's equal halves the measured shares reach equal times within
+// a few passes and stay contiguous and complete; a new row count starts again.
+TEST(MeasuredShares, MoveToEqualMeasuredTimes) {
+  const std::size_t n = 1000;
+  const auto offset = offsets(std::vector<std::uint32_t>(n, 2));
+  const auto row_time = [&](std::size_t i) { return i < n / 5 ? 10.0 : 1.0; };
+  MeasuredShares shares;
+  shares.prepare(offset, n, 4.0, 2);
+  EXPECT_EQ(shares.split(), (std::vector<std::size_t>{0, n / 2, n}));
+  std::vector<double> time(2);
+  for (int pass = 0; pass < 12; ++pass) {
+#pragma omp parallel num_threads(2)
+    {
+      EXPECT_EQ(omp_get_num_threads(), 2);
+      const auto [b, e] = shares.rows(offset, 4.0);
+      double seconds = 0.0;
+      for (std::size_t i = b; i < e; ++i) seconds += row_time(i);
+      shares.record(seconds);
+      time[omp_get_thread_num()] = seconds;
+    }
+    shares.rebalance();
+    shares.prepare(offset, n, 4.0, 2);  // the same n and team: kept
+  }
+  EXPECT_EQ(shares.split().front(), 0u);
+  EXPECT_EQ(shares.split().back(), n);
+  EXPECT_NEAR(time[0] / time[1], 1.0, 0.02);  // from 1400 / 500 at the estimate
+  shares.prepare(offset, n + 8, 4.0, 2);
+  EXPECT_EQ(shares.split(), (std::vector<std::size_t>{0, (n + 8) / 2, n + 8}));
 }
 
 // Every DEM pass splits the spheres by these shares and no sum crosses two shares, so a
