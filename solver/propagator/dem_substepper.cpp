@@ -430,7 +430,9 @@ void DemSubstepper::substeps_fused(double h, int count, double weight) {
 // a sphere would cover at the start's speeds and accelerations; if any sphere moved m/2 or
 // more (a bound: the sums of the largest steps), the half step starts again from the saved
 // state with every sphere sub-stepped. Both kinds add their trapezoids to fm over the same
-// window.
+// window. With friction a free sphere keeps its spin (no contact, no torque) and the near
+// ones sub-step theirs; only their rows advance the contact history, so only theirs is kept
+// for a restart.
 bool DemSubstepper::substeps_multirate(double dt, double h, int count) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
