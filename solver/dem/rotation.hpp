@@ -38,6 +38,15 @@ inline void kick_spin_of(DemParticles& s, std::size_t j, double h) {
   s.wz[j] += c * s.tz[j];
 }
 
+// ... keeping the torque it held as tau_old (the corrector's)
+inline void predict_spin_of(DemParticles& s, std::size_t j, double h, double& tox, double& toy,
+                            double& toz) {
+  tox = s.tx[j];
+  toy = s.ty[j];
+  toz = s.tz[j];
+  kick_spin_of(s, j, h);
+}
+
 // One sphere's spin corrector: w <- w + h/2 (tau - tau_old) / I.
 inline void correct_spin_of(DemParticles& s, std::size_t j, double h, double tox, double toy,
                             double toz) {

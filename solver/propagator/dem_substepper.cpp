@@ -617,10 +617,7 @@ double DemSubstepper::near_substeps(const Contact& contact, const Drag& drag, do
           max_step2, correct_and_predict(s, j, finish, h, a_old_x_[q], a_old_y_[q], a_old_z_[q]));
       if constexpr (kSpin) {  // as predict_spin and correct_spin
         if (k > 0) correct_spin_of(s, j, h, t_old.x[q], t_old.y[q], t_old.z[q]);
-        t_old.x[q] = s.tx[j];
-        t_old.y[q] = s.ty[j];
-        t_old.z[q] = s.tz[j];
-        kick_spin_of(s, j, h);
+        predict_spin_of(s, j, h, t_old.x[q], t_old.y[q], t_old.z[q]);
       }
     }
     reach += std::sqrt(max_step2);
