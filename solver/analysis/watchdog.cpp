@@ -126,12 +126,17 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
   const double rho0 = sim.eos().rho0;
   const double floor_z = box.lo[2] - (sc.fluid.wall_layers + 1) * sc.fluid.spacing;
   const double top_z = box.hi[2];
+  // The free surface sits at the box's top in a full column: a surface particle may bob a
+  // kernel support 2h above it (the cell list keeps it in the top cell, its neighbours all
+  // below); one past that has no neighbour left and has left the fluid.
+  const double fluid_top_z = top_z + 2.0 * sc.fluid.smoothing_factor * sc.fluid.spacing;
   for (long a = 0; a < nf; ++a) {
     if (!std::isfinite(f.x[a] + f.y[a] + f.z[a] + f.vx[a] + f.vy[a] + f.vz[a] + f.rho[a])) {
       bad_fluid = std::min(bad_fluid, a);
       continue;
     }
-    const bool outside = f.z[a] < floor_z || f.z[a] > top_z || far_sideways(box, f.x[a], f.y[a]);
+    const bool outside =
+        f.z[a] < floor_z || f.z[a] > fluid_top_z || far_sideways(box, f.x[a], f.y[a]);
     if (outside) out_fluid = std::min(out_fluid, a);
     if (f.kind[a] != kFluid) continue;
     const double e = std::abs(f.rho[a] / (f.eps[a] * rho0) - 1.0);
@@ -175,7 +180,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
     const bool below = f.z[out_fluid] < floor_z;
     return fluid_alarm(
         sim, out_fluid, below ? "passed through the bottom wall" : "left the domain",
-        f.z[out_fluid], below ? floor_z : top_z,
+        f.z[out_fluid], below ? floor_z : fluid_top_z,
         below ? fluid_cause(sim)
               : instability_cause(sim, "thrown past the top of the box: " + fluid_cause(sim) +
                                            " (or give the column room above it: "
