@@ -315,7 +315,13 @@ def mark_safeguard_hits(rows):
 
 
 def failed_run_rows(scene, result, what):
-    return [Row(scene, what, "–", "–", f"run failed (exit {result.returncode}, see {result.dir}/sphdem.out)",
+    """A FAIL row for a run that did not end, with sphdem's own reason (its 'run failed' line)."""
+    why = ""
+    out = os.path.join(result.dir, "sphdem.out")
+    if os.path.exists(out):
+        lines = [l for l in open(out, errors="replace") if "run failed" in l]
+        why = (": " + lines[-1].strip().split("run failed: ", 1)[-1][:400]) if lines else ""
+    return [Row(scene, what, "–", "–", f"run failed (exit {result.returncode}, {result.dir}/sphdem.out){why}",
                 None, 0.0, result)]
 
 
@@ -1300,12 +1306,16 @@ class SandColumn:
     LOAD = ("fluid_load_base: the forces of the wall particles on the column (SPH pairs with the fluid, "
             "variational pairs with the spheres) less the clear column's weight, i.e. the base's mean excess "
             "pore pressure as the wall feels it (analysis/pore_pressure.hpp)")
-    FIRST_LAYER = ("the first fluid layer's mean P − ρf g (H − z) (excess_pore_pressure_base) is a point reading "
-                   "through the kernel sums, not a load: without the hydrostatic split (session 6) it read ~0.37 in "
-                   "the 0.1 m column at rest, where the wall carries the grains in contacts (row 'momentum "
-                   "balance'); with the split (the cases now) 0.008 there, but in the 1 m column it climbs to "
-                   "~0.36 from 0.15 s on, once the bed forms around the first layer, while the fluid's load on "
-                   "the wall falls from its peak as the contacts take the landed grains (not investigated)")
+    FIRST_LAYER = ("the first fluid layer's mean P − ρf g (H − z) (excess_pore_pressure_base) is a point reading, "
+                   "not a load. In the 1 m column with the defaults (validation/README.md, session 22: the layers "
+                   "from the VTK snapshots) it reads the suspension's pressure until the bed forms (0.03–0.12 s: "
+                   "0.145 against 0.147–0.155 in the layers above and a load of 0.157), then rises through the bed "
+                   "(0.21–0.30 s: 0.216, 0.195, 0.180 in the three layers the bed fills, 0.163–0.168 above it) while "
+                   "the load stays at the pressure above the bed (0.170) and the contacts carry the bed's own grains "
+                   "(0.016): the two close the momentum balance. A bed at rest passes no flow, so the continuum's "
+                   "pressure through it is the pressure above it; the rise is the model's, inside the bed, where the "
+                   "kernel reads a voidage of 0.62–0.66 against the centres' 0.42–0.46. With the drag's fields on "
+                   "1.5 h (the case's keys until issue 14) it reached 0.36 (+98 %); the cause of the rest is open")
     SHORT = ("the 0.1 m column is too short for eq. 15: its grains reach their steady speed (~0.1 s) after "
              "the lowest have landed, so at no time does the fluid carry them all")
 
@@ -1333,6 +1343,9 @@ class SandColumn:
             rows += self.peak_rows(start, ", 1 m column (the case), first 0.3 s", True) + self.speed_rows(start)
         rows += self.peak_rows(r, ", 0.1 m column", False) + self.rows_of(r, ", 0.1 m column")
         seeds = [r] + [results.get(f"sand_column_reduced_seed{s}") for s in self.EXTRA_SEEDS]
+        for x in seeds:
+            if x is not None and not x.ok:
+                rows += failed_run_rows(self.name, x, f"the 0.1 m column, {x.run.key} (pooled for the segregation)")
         rows += self.segregation_rows([x for x in seeds if x is not None and x.ok], ", 0.1 m column")
         return rows
 
@@ -1786,6 +1799,27 @@ def fmt_target(row):
     return f"≤ {row.target:g} × limit" if row.ratio else f"≤ {100 * row.target:.3g} %"
 
 
+def solver_provenance(build):
+    """The sphdem the runs used: its SHA-256 (what --reuse compares) and the commit of the
+    source tree it was built from (the build's CMake cache), which may differ from this
+    checkout's when the build is another worktree's."""
+    sphdem = os.path.join(build, "app", "sphdem")
+    sha = solver_identity(sphdem)[:12]
+    src = None
+    cache = os.path.join(build, "CMakeCache.txt")
+    if os.path.exists(cache):
+        for line in open(cache):
+            if line.startswith("sphdem_SOURCE_DIR:"):
+                src = line.split("=", 1)[1].strip()
+    if src is None:
+        return f"sphdem sha256 {sha}…"
+    head = sh(["git", "-C", src, "rev-parse", "--short", "HEAD"]) or "?"
+    changed = sh(["git", "-C", src, "status", "--porcelain", "--untracked-files=no", "--", "solver", "app",
+                  "catalyst", "CMakeLists.txt"])
+    return (f"sphdem sha256 {sha}…, built from {src} at {head}"
+            + (" with uncommitted changes to the solver" if changed else ""))
+
+
 def write_markdown(path, rows, args, total_wall, figures, started, matrix=()):
     commit = sh(["git", "rev-parse", "--short", "HEAD"])
     dirty = " (with uncommitted changes)" if sh(["git", "status", "--porcelain", "--untracked-files=no"]) else ""
@@ -1795,7 +1829,8 @@ def write_markdown(path, rows, args, total_wall, figures, started, matrix=()):
            "",
            f"- date: {started:%Y-%m-%d %H:%M %Z}",
            f"- machine: {machine()}",
-           f"- commit: {commit}{dirty}",
+           f"- commit: {commit}{dirty} (this script and the scene files)",
+           f"- solver: {solver_provenance(args.build)}",
            f"- total wall time: {total_wall:.0f} s ({total_wall / 60:.1f} min) of the runs"
            + (f", under `nice -n {args.nice}`" if args.nice else "") + (" (runs reused: their recorded wall times)" if args.reuse else ""),
            f"- result: **{sum(r.status == 'PASS' for r in rows)} pass, {sum(r.status == 'FAIL' for r in rows)} fail, "
