@@ -411,10 +411,6 @@ class BlockMonodisperse:
     FACES = ("finite block: the kernel-smeared faces (rows below: (4.4) at the voidage the spheres "
              "see, the taller block, the infinite-block limit)")
 
-    FACES_SPLIT = ("the faces' error of the finite block (rows above), now without the absolute-pressure "
-                   "error the unsplit variational row carries, which pulls the block back (a 100 µm sphere "
-                   "1.2 mm deep: slip −1.8 %; the block spans 1.5–3.5 mm below the surface)")
-
     def _sets(self, mode, width=None, hd=None):
         s = {"output.log_interval": 1e-4}
         if mode == "reduced":
@@ -457,21 +453,6 @@ class BlockMonodisperse:
                 out.append(Run(r.key + "_long", self.case, dict(r.sets, **{"time.end": self.LONG_END})))
         for hd in self.SWEEP[mode]:
             out.append(Run(f"block_sweep_hd{hd:g}", self.case, self._sets(mode, self.SWEEP_WIDTH, hd)))
-        # the same blocks with the variational pressure coupling (coupling.pressure_coupling),
-        # which removes the spurious force the interpolated coupling leaves at the faces
-        # (full mode only: CI's packed_bed_stability_validation covers the coupling)
-        for eps in (() if mode == "reduced" else (0.9, 0.8)):
-            out.append(Run(f"block_eps{eps}_variational", self.case,
-                           dict(self._sets(mode), **{"particles.0.voidage": eps,
-                                                     "coupling.pressure_coupling": "variational",
-                                                     "coupling.sphere_kernel_scale": 1})))
-            # and with the hydrostatic split, which removes the kernel sums' error times the
-            # absolute pressure (a 100 um sphere 7.2 mm deep: -9.4 % -> -3.8 % in slip)
-            out.append(Run(f"block_eps{eps}_split", self.case,
-                           dict(self._sets(mode), **{"particles.0.voidage": eps,
-                                                     "coupling.pressure_coupling": "variational",
-                                                     "coupling.hydrostatic_split": "true",
-                                                     "coupling.sphere_kernel_scale": 1})))
         return out
 
     def measure(self, r):
@@ -520,23 +501,6 @@ class BlockMonodisperse:
             line, = ax.plot(t * 1e3, r.log[f"slip_z_mean:{r.species()['name']}"] * 1e3, label=f"sphdem ε = {eps:g}")
             ax.axhline(ref * 1e3, color=line.get_color(), ls="--", label=f"(4.4) ε = {eps:g}")
             ax.axvspan(t0 * 1e3, t1 * 1e3, color=line.get_color(), alpha=0.08)
-        for eps, variant, how in [(e, v, h) for e in (0.9, 0.8) for v, h in
-                                  (("variational", "variational pressure coupling"),
-                                   ("split", "variational pressure coupling with the hydrostatic split"))]:
-            key = f"block_eps{eps}_{variant}"
-            r = results.get(key)
-            if r is None:
-                continue
-            if not r.ok or r.log is None:
-                rows += failed_run_rows(self.name, r, key)
-                continue
-            slip, ref, _, (t0, t1) = self.measure(r)
-            rows.append(Row(self.name, f"mean slip, ε = {eps:g}, {how}, t ∈ [{t0 * 1e3:.1f}, {t1 * 1e3:.1f}] ms",
-                            f"{ref * 1e3:.4g} mm/s", "Di Felice block slip (4.4)", f"{slip * 1e3:.4g} mm/s",
-                            slip / ref - 1, self.TARGET, r, known=self.FACES_SPLIT if variant == "split" else None,
-                            note="coupling.pressure_coupling: variational" +
-                                 (", coupling.hydrostatic_split: true" if variant == "split" else "") +
-                                 " (the case uses interpolated)"))
         # finite-block face effect: error(H_b) = a + b / H_b from the two block heights
         for eps, suffix in ((0.9, ""), (0.8, ""), (0.8, "_long")):
             short, tall = results.get(f"block_eps{eps}{suffix}"), results.get(f"block_eps{eps}_tall{suffix}")
@@ -1611,7 +1575,7 @@ def gtest_results(build, test, nice=0, folder="validation"):
         os.makedirs(os.path.dirname(xml), exist_ok=True)
         print(f"[matrix] running {test} (no record newer than its executable)", flush=True)
         cmd = ([] if not nice else ["nice", "-n", str(nice)]) + [exe, f"--gtest_output=xml:{xml}"]
-        subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=os.path.dirname(exe))
         if not os.path.exists(xml):
             return None
     out = {}
