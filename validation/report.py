@@ -623,6 +623,13 @@ class SuspensionMonodisperse:
         n = int((t_end - t0) // period)
         return t0, t0 + n * period, n
 
+    def interface_points(self, r, u_k):
+        """The fit window (t_lo, t_hi, whole periods) and the in-situ interface heights:
+        (t_lo, t_hi, nper, time, z_top, the points inside the window)."""
+        t_lo, t_hi, nper = self.window(r, u_k)
+        ti, zt = r.interfaces["time"], r.interfaces["z_top"]
+        return t_lo, t_hi, nper, ti, zt, (ti >= t_lo - 1e-9) & (ti <= t_hi + 1e-9) & np.isfinite(zt)
+
     def evaluate(self, results, ctx):
         rows = []
         r = results["suspension_interface"]
@@ -644,9 +651,7 @@ class SuspensionMonodisperse:
             t_lo, t_hi = 2 * r.acoustic_period(), r.log["time"][-1]
             t_lo, t_hi = t_lo, t_lo + int((t_hi - t_lo) // r.acoustic_period()) * r.acoustic_period()
         else:
-            t_lo, t_hi, nper = self.window(r, u_k)
-            ti, zt = r.interfaces["time"], r.interfaces["z_top"]
-            sel = (ti >= t_lo - 1e-9) & (ti <= t_hi + 1e-9) & np.isfinite(zt)
+            t_lo, t_hi, nper, ti, zt, sel = self.interface_points(r, u_k)
             if nper < 1 or sel.sum() < 4:
                 rows.append(Row(self.name, "interface velocity", f"{u_k * 1e3:.4g} mm/s", "Kynch with (4.4)",
                                 f"window too short ({sel.sum()} points)", None, self.TARGET, r))
@@ -730,7 +735,7 @@ class SuspensionMonodisperse:
         rows.append(Row(self.name, "largest overlap / d over the run", "< 0.01", "cases/suspension_monodisperse.yaml",
                         f"{ov:.2e}", ov / 0.01, 1.0, r, ratio=True))
 
-        rows += self.sediment_rows(results, "suspension_sediment", name, u_k, "")
+        rows += self.sediment_rows(results.get("suspension_sediment"), name, u_k)
         if self.mode == "full":
             rows += self.shipped_rows(results.get("suspension_shipped"), name, u_k)
         return rows
@@ -751,19 +756,13 @@ class SuspensionMonodisperse:
             rows.append(Row(self.name, self.SHIPPED + "interface velocity", f"{u_k * 1e3:.4g} mm/s", "Kynch with (4.4)",
                             "not measured", None, self.TARGET, s, skip="no in-situ interfaces.csv"))
         else:
-            t_lo, t_hi, nper = self.window(s, u_k)
-            ti, zt = s.interfaces["time"], s.interfaces["z_top"]
-            sel = (ti >= t_lo - 1e-9) & (ti <= t_hi + 1e-9) & np.isfinite(zt)
+            t_lo, t_hi, nper, ti, zt, sel = self.interface_points(s, u_k)
             u_sim = -np.polyfit(ti[sel], zt[sel], 1)[0] if sel.sum() >= 4 else float("nan")
             rows.append(Row(self.name, self.SHIPPED + f"interface velocity −dz_top/dt, line fit over t ∈ "
                                                       f"[{t_lo:.3g}, {t_hi:.3g}] s ({sel.sum()} analyses)",
                             f"{u_k * 1e3:.4g} mm/s", "Kynch: hindered settling (4.4)", f"{u_sim * 1e3:.4g} mm/s",
                             u_sim / u_k - 1, self.TARGET, s))
-        g0 = s.case["particles"][0]
-        h0 = g0["max"][2] - g0["min"][2]
-        com = s.log[f"com_z:{name}"][-1]
-        eps_s = 1 - (1 - g0["voidage"]) * h0 / (2 * com)
-        rows += self.at_rest_rows(s, eps_s, abs(s.log[f"vz_mean:{name}"][-1]), u_k, prefix=self.SHIPPED)
+        rows += self.at_rest_rows(s, self.sediment_voidage(s, name), abs(s.log[f"vz_mean:{name}"][-1]), u_k, prefix=self.SHIPPED)
         ov = float(np.max(s.log["max_overlap_over_d"]))
         rows.append(Row(self.name, self.SHIPPED + "largest overlap / d", "< 0.01", "cases/suspension_monodisperse.yaml",
                         f"{ov:.2e}", ov / 0.01, 1.0, s, ratio=True))
@@ -804,37 +803,36 @@ class SuspensionMonodisperse:
                         f"{last:.2g} J / {first:.2g} J", last / first, 1.0, s, ratio=True))
         return rows
 
-    def sediment_rows(self, results, key, name, u_k, label):
+    @staticmethod
+    def sediment_voidage(s, name):
+        """1 - (1 - eps0) H0 / (2 com_z): a uniform sediment from the wall to z_s has its
+        centre of mass at z_s / 2."""
+        g0 = s.case["particles"][0]
+        return 1 - (1 - g0["voidage"]) * (g0["max"][2] - g0["min"][2]) / (2 * s.log[f"com_z:{name}"][-1])
+
+    def sediment_rows(self, s, name, u_k):
         rows = []
-        s = results.get(key)
-        if s is None and key != "suspension_sediment":
-            return rows
         if s is None:
             rows.append(Row(self.name, "final sediment voidage", f"≈ 0.5 (thesis); {self.EPS_RCP} (RCP)",
                             "physics.md §5; random close packing", "not reached", None, None, None,
                             skip="the reduced run ends long before the suspension has settled (full mode only)"))
         elif not s.ok or s.log is None:
-            rows += failed_run_rows(self.name, s, "final sediment voidage" + label)
+            rows += failed_run_rows(self.name, s, "final sediment voidage")
         else:
-            g0 = s.case["particles"][0]
-            e0, h0 = g0["voidage"], g0["max"][2] - g0["min"][2]
-            com = s.log[f"com_z:{name}"][-1]
-            # a uniform sediment from the wall to z_s has its centre of mass at z_s / 2
-            eps_s = 1 - (1 - e0) * h0 / (2 * com)
+            eps_s = self.sediment_voidage(s, name)
             v_end = abs(s.log[f"vz_mean:{name}"][-1])
             settled = v_end < 0.01 * u_k
             ke = s.log["kinetic_energy_fluid"][-1]
             rows.append(Row(self.name, f"final sediment voidage (1 − (1−ε0) H0 / (2 com_z)) at t = "
-                                       f"{s.log['time'][-1]:.2g} s{label}",
+                                       f"{s.log['time'][-1]:.2g} s",
                             f"≈ 0.5 (thesis §5.4); {self.EPS_RCP} (RCP)", "physics.md §5; random close packing",
                             f"{eps_s:.3f}" + ("" if settled else f" (not settled: |v_z| = {v_end * 1e3:.2g} mm/s)"),
                             None, None, s,
                             note=f"fluid kinetic energy at the end {ke:.2g} J, largest density error "
                                  f"{float(np.max(s.log['max_density_error'])):.3g}"))
-            if not label:   # the defaults' run: the matrix's criteria, each with its target
-                rows += self.at_rest_rows(s, eps_s, v_end, u_k)
+            rows += self.at_rest_rows(s, eps_s, v_end, u_k)   # the matrix's criteria, with targets
             ov = float(np.max(s.log["max_overlap_over_d"]))
-            rows.append(Row(self.name, f"largest overlap / d (sediment run{label})", "< 0.01",
+            rows.append(Row(self.name, "largest overlap / d (sediment run)", "< 0.01",
                             "cases/suspension_monodisperse.yaml", f"{ov:.2e}", ov / 0.01, 1.0, s, ratio=True))
         return rows
 
