@@ -3,10 +3,10 @@
 each species' mean vertical velocity and the height of its suspension front.
 DIR/insitu/com.csv: time, com_z:S for each species S, com_z:all (m), mass-weighted;
 vz_mean:S (m/s), mass-weighted; front_z:S (m), the height where the species' solid
-fraction, binned in FRONT_BINS layers over the box height, falls to half its value in
-the initial suspension (the median of the occupied layers at the first analysis): the
-per-species interface of a suspension of two densities or sizes (Kynch), which the
-voidage profile cannot tell apart. All sums over MPI ranks."""
+fraction, averaged over layers of 1/FRONT_BINS of the box height (fronts.py), falls to
+half its value in the initial suspension (the median of the occupied layers at
+the first analysis): the per-species interface of a suspension of two densities or sizes
+(Kynch), which the voidage profile cannot tell apart. All sums over MPI ranks."""
 import os
 import sys
 
@@ -16,6 +16,7 @@ from paraview import catalyst
 from paraview.simple import TrivialProducer
 
 import sphdem_insitu as si
+from fronts import FINE, front_height, layer_profile, layer_volumes
 
 particles = TrivialProducer(registrationName="particles")
 options = catalyst.Options()
@@ -25,27 +26,14 @@ state = {}
 FRONT_BINS = 60
 
 
-def front_height(frac, c0, z_lo, dz):
-    """Highest height where frac (per layer, bottom first) still reaches c0 / 2,
-    interpolated linearly between the centres of the layer and the one above."""
-    above = np.nonzero(frac >= 0.5 * c0)[0]
-    if c0 <= 0 or above.size == 0:
-        return float("nan")
-    k = above[-1]
-    zc = z_lo + (k + 0.5) * dz
-    if k + 1 >= frac.size:
-        return zc
-    f0, f1 = frac[k], frac[k + 1]
-    return zc + dz * (f0 - 0.5 * c0) / (f0 - f1)
-
-
 def catalyst_execute(info):
     data = si.local_data(particles, info.time)
     names = si.species_names(data)
     ns = len(names)
     box = si.field(data, "box")  # field data travels with every rank's piece, empty or not
-    nb = FRONT_BINS
-    # [sum m z, sum m, sum m vz per species, solid volume per species and layer]
+    nb = FRONT_BINS * FINE
+    dz = (box[5] - box[4]) / nb
+    # [sum m z, sum m, sum m vz per species, solid volume per species and fine layer]
     sums = np.zeros(3 * ns + ns * nb)
     if data.GetNumberOfPoints() > 0:
         pts = np.asarray(data.Points)
@@ -57,8 +45,7 @@ def catalyst_execute(info):
         sums[:ns] = np.bincount(sp, weights=m * pts[:, 2], minlength=ns)
         sums[ns:2 * ns] = np.bincount(sp, weights=m, minlength=ns)
         sums[2 * ns:3 * ns] = np.bincount(sp, weights=m * vz, minlength=ns)
-        layer = np.clip(((pts[:, 2] - box[4]) / (box[5] - box[4]) * nb).astype(int), 0, nb - 1)
-        sums[3 * ns:] = np.bincount(sp * nb + layer, weights=vol, minlength=ns * nb)
+        sums[3 * ns:] = layer_volumes(pts[:, 2], vol, sp, ns, box[4], dz, nb).ravel()
     sums = si.allreduce_sum(sums)
     if si.RANK != 0:
         return
@@ -66,8 +53,7 @@ def catalyst_execute(info):
     com = [mz[k] / mass[k] if mass[k] > 0 else float("nan") for k in range(ns)]
     vz_mean = [mvz[k] / mass[k] if mass[k] > 0 else float("nan") for k in range(ns)]
     com_all = mz.sum() / mass.sum() if mass.sum() > 0 else float("nan")
-    dz = (box[5] - box[4]) / nb
-    frac = sums[3 * ns:].reshape(ns, nb) / ((box[1] - box[0]) * (box[3] - box[2]) * dz)
+    frac = [layer_profile(v) / ((box[1] - box[0]) * (box[3] - box[2]) * dz) for v in sums[3 * ns:].reshape(ns, nb)]
     path = os.path.join(si.OUT, "com.csv")
     si.resume_csv_pipeline(state, "com_tracks", path)  # rows and c0 of the run before
     if "c0" not in state:
