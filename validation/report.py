@@ -171,6 +171,38 @@ def solver_identity(sphdem):
         return hashlib.sha256(fh.read()).hexdigest()
 
 
+def source_dir(build):
+    """The source tree a build was configured from (its CMake cache), None if unknown."""
+    cache = os.path.join(build, "CMakeCache.txt")
+    if os.path.exists(cache):
+        for line in open(cache):
+            if line.startswith("sphdem_SOURCE_DIR:"):
+                return line.split("=", 1)[1].strip()
+    return None
+
+
+def pipelines_identity(run, sphdem):
+    """What a reused in-situ run must share with this report besides the solver: the
+    in-situ scripts it executes (its insitu.pipelines, read from the solver's source tree,
+    which is where sphdem loads them) and the modules of that folder they import; '' for a
+    run without in situ."""
+    if not run.insitu:
+        return ""
+    folder = os.path.join(source_dir(os.path.dirname(os.path.dirname(sphdem))) or REPO, "pipelines")
+    todo = [n.strip() for n in str(run.sets["insitu.pipelines"]).strip("[]").split(",") if n.strip()]
+    seen, digest = set(), hashlib.sha256()
+    while todo:
+        name = todo.pop(0)
+        path = os.path.join(folder, name + ".py")
+        if name in seen or not os.path.exists(path):
+            continue
+        seen.add(name)
+        text = open(path, "rb").read()
+        digest.update(name.encode() + b"\0" + text)
+        todo += re.findall(r"^(?:from|import)\s+(\w+)", text.decode(), re.M)
+    return digest.hexdigest()
+
+
 def same_command(recorded, cmd):
     """Whether a recorded run was made with this command. The scene file is compared by its
     path inside the repository and, when the recorded one still exists, by its content, so
@@ -190,7 +222,7 @@ def same_command(recorded, cmd):
 
 def execute(run, sphdem, runs_dir, reuse, nice, env=None):
     """Make the run, or with `reuse` take it from its directory when it was made by the same
-    solver, scene file and command; a run that was stopped before its end (its
+    solver, scene file, in-situ scripts and command; a run that was stopped before its end (its
     report_partial.json: same solver, scene and command) continues from its newest
     checkpoint with `sphdem resume`, and its wall time is the parts' sum (a stopped part
     counts up to its last checkpoint, the work after it being redone)."""
@@ -200,29 +232,35 @@ def execute(run, sphdem, runs_dir, reuse, nice, env=None):
     partial = os.path.join(out_dir, "report_partial.json")
     case_sha = hashlib.sha256(open(run.case_path(), "rb").read()).hexdigest()
     solver_sha = solver_identity(sphdem)
+    pipes_sha = pipelines_identity(run, sphdem)
+
+    def same_run(meta):
+        """reused (or resumed) only if the scene file (its hash), the solver (the
+        executable's hash) and the in-situ scripts are the ones the run had; a record
+        without any of them is run again"""
+        return (meta.get("case_sha256") == case_sha and meta.get("solver_sha256") == solver_sha
+                and meta.get("pipelines_sha256", None if pipes_sha else "") == pipes_sha
+                and same_command(meta.get("cmd"), cmd))
     if reuse and os.path.exists(stamp):
         meta = json.load(open(stamp))
-        # reused only if the scene file (its hash) and the solver (the executable's hash)
-        # are the ones the run had; a record without either is run again
-        same = meta.get("case_sha256") == case_sha and meta.get("solver_sha256") == solver_sha
-        if same and same_command(meta.get("cmd"), cmd):
+        if same_run(meta):
             print(f"[report] reuse {run.key} ({meta['wall']:.1f} s, commit {meta.get('commit', '?')})", flush=True)
             return RunResult(run, out_dir, meta["wall"], meta["returncode"], cmd)
         print(f"[report] not reusing {run.key}: "
               + ("the solver changed" if meta.get("solver_sha256") != solver_sha else
-                 "the scene file changed" if meta.get("case_sha256") != case_sha else "another command"),
+                 "the scene file changed" if meta.get("case_sha256") != case_sha else
+                 "the in-situ scripts changed" if meta.get("pipelines_sha256", "") != pipes_sha else "another command"),
               flush=True)
     wall_before, checkpoints = 0.0, glob.glob(os.path.join(out_dir, "checkpoints", "ckpt_*.h5"))
     resume = False
     if reuse and os.path.exists(partial) and checkpoints:
         meta = json.load(open(partial))
-        if (meta.get("case_sha256") == case_sha and meta.get("solver_sha256") == solver_sha
-                and same_command(meta.get("cmd"), cmd)):
+        if same_run(meta):
             newest = max(os.path.getmtime(c) for c in checkpoints)
             wall_before = meta["wall_before"] + max(0.0, newest - meta["started"])
             resume = True
     os.makedirs(out_dir, exist_ok=True)
-    identity = {"cmd": cmd, "case_sha256": case_sha, "solver_sha256": solver_sha,
+    identity = {"cmd": cmd, "case_sha256": case_sha, "solver_sha256": solver_sha, "pipelines_sha256": pipes_sha,
                 "commit": sh(["git", "rev-parse", "--short", "HEAD"]) or "?"}
     json.dump(dict(identity, wall_before=wall_before, started=time.time()), open(partial, "w"))
     if resume:
@@ -991,15 +1029,16 @@ class BlockBidisperse:
         return rows
 
 
-FRONT_LAYERS = 60   # pipelines/com_tracks.py FRONT_BINS: front_z is binned in 60 layers over the box height
+FRONT_LAYERS = 60   # pipelines/com_tracks.py FRONT_BINS: front_z's profile is averaged over 60 layers of the box height
 
 
 def front_fit(t, z, t0, t1, dz):
     """Front speed over [t0, t1] from the in-situ front_z: a line fit, and a line fit plus
-    the first harmonic of z/dz. front_z is interpolated between the centres of layers of
-    height dz, which leaves an error periodic in the front's height with period dz (for a
-    sharp front about ±0.085 dz); a front that travels less than a couple of layers in
-    the window carries it into the slope. Returns (u_line, u_corrected, amplitude,
+    the first harmonic of z/dz. Runs before pipelines/fronts.py read front_z between the
+    centres of layers of height dz, which leaves an error periodic in the front's height
+    with period dz (for a sharp front about ±0.085 dz) that a front travelling a layer or
+    two in the window carries into the slope; the fine profile since leaves the harmonic
+    at the spheres' own noise (the amplitude is a row's note). Returns (u_line, u_corrected, amplitude,
     travel in layers, points), or None if fewer than 4 points."""
     sel = (t >= t0 - 1e-9) & (t <= t1 + 1e-9) & np.isfinite(z)
     if sel.sum() < 4:
@@ -1783,12 +1822,7 @@ def solver_provenance(build):
     checkout's when the build is another worktree's."""
     sphdem = os.path.join(build, "app", "sphdem")
     sha = solver_identity(sphdem)[:12]
-    src = None
-    cache = os.path.join(build, "CMakeCache.txt")
-    if os.path.exists(cache):
-        for line in open(cache):
-            if line.startswith("sphdem_SOURCE_DIR:"):
-                src = line.split("=", 1)[1].strip()
+    src = source_dir(build)
     if src is None:
         return f"sphdem sha256 {sha}…"
     head = sh(["git", "-C", src, "rev-parse", "--short", "HEAD"]) or "?"

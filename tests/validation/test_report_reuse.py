@@ -1,5 +1,5 @@
-"""validation/report.py: a run is reused only when the solver and the scene file are the
-ones it was made with; the safeguard line a run prints at its end is read and marks the
+"""validation/report.py: a run is reused only when the solver, the scene file and the
+in-situ scripts are the ones it was made with; the safeguard line a run prints at its end is read and marks the
 rows of that run; --strict turns a missed target into a failing exit.
 
 A stand-in `sphdem` (a script that writes a log.csv, prints the safeguard line and counts
@@ -76,6 +76,21 @@ class Reuse(unittest.TestCase):
         meta = json.load(open(stamp))
         del meta["solver_sha256"]
         json.dump(meta, open(stamp, "w"))
+        self.execute()
+        self.assertEqual(self.calls_made(), 2)
+
+    def test_in_situ_run_again_when_a_script_it_runs_changed(self):
+        # an in-situ run depends on its pipelines and the modules they import, not others
+        pipes = os.path.join(self.repo, "pipelines")
+        os.makedirs(pipes)
+        for name, text in (("interfaces", "import helper\n"), ("helper", "x = 1\n"), ("com_tracks", "y = 2\n")):
+            open(os.path.join(pipes, name + ".py"), "w").write(text)
+        self.run_ = report.Run("scene_insitu", "cases/scene.yaml", {"insitu.pipelines": "[interfaces]"}, insitu=True)
+        self.execute()
+        open(os.path.join(pipes, "com_tracks.py"), "a").write("# not run by this scene\n")
+        self.execute()
+        self.assertEqual(self.calls_made(), 1)
+        open(os.path.join(pipes, "helper.py"), "a").write("# imported by interfaces\n")
         self.execute()
         self.assertEqual(self.calls_made(), 2)
 
