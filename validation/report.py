@@ -634,7 +634,7 @@ class SuspensionMonodisperse:
                          "insitu.every": 1e-3, "insitu.grid_spacing": 5e-5, "output.log_interval": 2.5e-4}
             return [Run("suspension_interface", self.case, interface, insitu=True)]
         # full: the case's column, stiffness and resolution; 60 ms (the whole settling
-        # takes ~1 s, ~6 h on 2 cores). The final sediment from a shorter column.
+        # to 1 s takes hours: --long, below). The final sediment from a shorter column.
         interface = {"time.end": 0.06, "insitu.every": 1e-3, "insitu.grid_spacing": 5e-5,
                      "output.log_interval": 2.5e-4}
         sediment = {"domain.size": "[0.002,0.002,0.0036]", "particles.0.max": "[0.002,0.002,0.0024]",
