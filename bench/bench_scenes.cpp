@@ -33,12 +33,16 @@ void run_steps(benchmark::State& state, const Scene& sc, int warmup) {
     dem += static_cast<double>(sim.spheres().n_owned) * sim.dem_substeps();
   }
   state.counters["sph_particle_steps_per_s"] = benchmark::Counter(sph, benchmark::Counter::kIsRate);
-  if (dem > 0) state.counters["dem_particle_steps_per_s"] = benchmark::Counter(dem, benchmark::Counter::kIsRate);
+  if (dem > 0)
+    state.counters["dem_particle_steps_per_s"] =
+        benchmark::Counter(dem, benchmark::Counter::kIsRate);
   state.counters["dem_substeps"] = sim.dem_substeps();
 }
 
 void BM_BlockStep(benchmark::State& state) {
-  run_steps(state, load_scene(SPHDEM_CASES_DIR "/block_monodisperse.yaml", {"startup.relax_steps=20"}), 20);
+  run_steps(state,
+            load_scene(SPHDEM_CASES_DIR "/block_monodisperse.yaml", {"startup.relax_steps=20"}),
+            20);
 }
 BENCHMARK(BM_BlockStep)->Unit(benchmark::kMillisecond)->Iterations(200)->UseRealTime();
 
@@ -48,7 +52,8 @@ name: peers_sph_column
 domain: {size: [0.004, 0.004, 0.006]}
 fluid: {spacing: 2.0e-4, sound_speed: 1.0, wall_layers: 3}
 startup: {relax_steps: 0}
-)", "peers_sph_column");
+)",
+                                   "peers_sph_column");
   run_steps(state, sc, 200);
 }
 BENCHMARK(BM_FluidColumnStep)->Unit(benchmark::kMillisecond)->Iterations(1400)->UseRealTime();
@@ -87,9 +92,10 @@ BENCHMARK(BM_BedStep)->Unit(benchmark::kMillisecond)->Iterations(60)->UseRealTim
 
 void BM_BedStepFriction(benchmark::State& state) {
   run_steps(state,
-            load_scene_text(kBed, "bench_bed",
-                            {"contact.tangential={model: linear_history, friction: 0.5, restitution: 0.5}",
-                             "contact.rolling={model: epsd, friction: 0.1}"}),
+            load_scene_text(
+                kBed, "bench_bed",
+                {"contact.tangential={model: linear_history, friction: 0.5, restitution: 0.5}",
+                 "contact.rolling={model: epsd, friction: 0.1}"}),
             20);
 }
 BENCHMARK(BM_BedStepFriction)->Unit(benchmark::kMillisecond)->Iterations(60)->UseRealTime();

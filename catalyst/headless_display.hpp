@@ -3,8 +3,9 @@
 // aborts the whole process. HeadlessDisplay starts a private Xvfb (with -noreset, which
 // avoids the 1-in-10 connection failures of a resetting server) when DISPLAY is unset,
 // and stops it at destruction.
-#include <string>
 #include <sys/types.h>
+
+#include <string>
 
 namespace sphdem {
 

@@ -18,7 +18,8 @@ struct SphereCopies {  // storage for the derived sphere fields, must outlive th
   std::vector<double> diameter, density;
   std::vector<int> species, contacts;
 };
-vtkSmartPointer<vtkPolyData> sphere_view(const DemParticles& s, const std::vector<int>* contact_count,
+vtkSmartPointer<vtkPolyData> sphere_view(const DemParticles& s,
+                                         const std::vector<int>* contact_count,
                                          SphereCopies& copies);
 
 }  // namespace sphdem

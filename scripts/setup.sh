@@ -8,8 +8,9 @@ cd "$(dirname "$0")/.."
 # ParaView 5.11 brings its own VTK 9.2 (libvtk9-dev conflicts with it); Catalyst needs
 # parallel HDF5 and Open MPI; Xvfb gives headless runs a display; Debian's python3
 # runs the pipelines' helpers and the figures (h5py, matplotlib, mpi4py, yaml); clang and
-# its runtimes (libFuzzer, sanitizers) build the scene loader's fuzz target (scripts/test.sh).
-PACKAGES=(g++ cmake make pkg-config libyaml-cpp-dev libfmt-dev libcli11-dev libgtest-dev libbenchmark-dev
+# its runtimes (libFuzzer, sanitizers) build the scene loader's fuzz target (scripts/test.sh);
+# clang-format checks every C++ file against .clang-format (ctest label format).
+PACKAGES=(g++ cmake make pkg-config clang-format libyaml-cpp-dev libfmt-dev libcli11-dev libgtest-dev libbenchmark-dev
           clang libclang-rt-14-dev
           paraview-dev python3-paraview libhdf5-openmpi-dev libopenmpi-dev openmpi-bin xvfb xauth
           python3-h5py python3-matplotlib python3-mpi4py python3-yaml python3-numpy)

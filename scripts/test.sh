@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Set-up plus the whole test suite: ctest labels unit, validation, extremes (and insitu
-# once the Catalyst adaptor is built). Extra arguments go to ctest (e.g. -L unit) and run
-# that alone. With none (as .ci/run calls it) two more checks follow, each built apart
-# with only what it needs and timed:
+# Set-up plus the whole test suite: ctest labels unit, validation, extremes, restart,
+# format (every C++ file as .clang-format says) and insitu (once the Catalyst adaptor is
+# built). Extra arguments go to ctest (e.g. -L unit) and run that alone. With none (as
+# .ci/run calls it) two more checks follow, each built apart with only what it needs and
+# timed:
 #  - the unit tests under AddressSanitizer and UBSan (SPHDEM_SANITIZE, g++, build-asan);
 #  - the scene loader's fuzz target for 60 s from its corpus (SPHDEM_FUZZ, clang, build-fuzz).
 set -euo pipefail

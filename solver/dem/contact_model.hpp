@@ -7,9 +7,9 @@
 namespace sphdem {
 
 struct LinearSpringDashpot {
-  double k = 0.0;               // spring stiffness (N/m)
-  double beta = 0.0;            // dashpot (kg/s); used when restitution < 0
-  double restitution = -1.0;    // if in (0,1]: beta chosen per contact from m12 (LIGGGHTS style)
+  double k = 0.0;                // spring stiffness (N/m)
+  double beta = 0.0;             // dashpot (kg/s); used when restitution < 0
+  double restitution = -1.0;     // if in (0,1]: beta chosen per contact from m12 (LIGGGHTS style)
   bool clip_attraction = false;  // true: normal force never pulls (LAMMPS gran/hooke)
 
   // With a restitution, beta = 2 m12 eta, eta = a omega0 / sqrt(1 + a^2), a = -ln(e)/pi
@@ -23,7 +23,9 @@ struct LinearSpringDashpot {
     return 2.0 * a / std::sqrt(1.0 + a * a);
   }
   // Dashpot for a pair of reduced mass m12, given beta_factor().
-  double beta_for(double m12, double factor) const { return factor < 0.0 ? beta : factor * std::sqrt(k * m12); }
+  double beta_for(double m12, double factor) const {
+    return factor < 0.0 ? beta : factor * std::sqrt(k * m12);
+  }
   double beta_for(double m12) const { return beta_for(m12, beta_factor()); }
   // Scalar normal force (positive = repulsive) for overlap delta and overlap rate ddelta.
   double normal_force(double delta, double ddelta, double beta_pair) const {
@@ -36,7 +38,9 @@ struct LinearSpringDashpot {
 struct ContactClosedForm {
   double omega0, eta, omega;
   ContactClosedForm(double k, double beta, double m12)
-      : omega0(std::sqrt(k / m12)), eta(beta / (2.0 * m12)), omega(std::sqrt(omega0 * omega0 - eta * eta)) {}
+      : omega0(std::sqrt(k / m12)),
+        eta(beta / (2.0 * m12)),
+        omega(std::sqrt(omega0 * omega0 - eta * eta)) {}
   double contact_time() const { return M_PI / omega; }                  // (2.44)
   double restitution() const { return std::exp(-M_PI * eta / omega); }  // (2.46)
   double max_overlap(double v0) const {                                 // (2.47)

@@ -29,7 +29,8 @@ struct ContactModel {
 // The registry: every allowed combination, the normal-only default first.
 using NormalContact = ContactModel<LinearSpringDashpot, NoTangential, NoRolling>;
 using FrictionalContact = ContactModel<LinearSpringDashpot, LinearHistoryTangential, NoRolling>;
-using FrictionalRollingContact = ContactModel<LinearSpringDashpot, LinearHistoryTangential, EpsdRolling>;
+using FrictionalRollingContact =
+    ContactModel<LinearSpringDashpot, LinearHistoryTangential, EpsdRolling>;
 using ContactLaw = std::variant<NormalContact, FrictionalContact, FrictionalRollingContact>;
 
 // The parameters of the three parts, as a scene gives them.
@@ -45,14 +46,18 @@ inline ContactLaw make_contact_law(const ContactParams& p) {
   using T = TangentialParams::Model;
   using R = RollingParams::Model;
   const double k = p.normal.k;
-  if (p.tangential.model == T::kNone && p.rolling.model == R::kNone) return NormalContact{p.normal, {}, {}};
+  if (p.tangential.model == T::kNone && p.rolling.model == R::kNone)
+    return NormalContact{p.normal, {}, {}};
   if (p.tangential.model == T::kLinearHistory && p.rolling.model == R::kNone)
     return FrictionalContact{p.normal, LinearHistoryTangential(p.tangential, k), {}};
   if (p.tangential.model == T::kLinearHistory && p.rolling.model == R::kEpsd)
-    return FrictionalRollingContact{p.normal, LinearHistoryTangential(p.tangential, k), EpsdRolling(p.rolling, k)};
+    return FrictionalRollingContact{p.normal, LinearHistoryTangential(p.tangential, k),
+                                    EpsdRolling(p.rolling, k)};
   throw std::invalid_argument(
-      "this combination of contact parts is not registered; allowed (tangential + rolling): none + none, "
-      "linear_history + none, linear_history + epsd (rolling resistance needs tangential friction)");
+      "this combination of contact parts is not registered; allowed (tangential + rolling): none + "
+      "none, "
+      "linear_history + none, linear_history + epsd (rolling resistance needs tangential "
+      "friction)");
 }
 
 inline bool contact_law_has_history(const ContactLaw& law) {

@@ -33,8 +33,8 @@ namespace sphdem {
 struct RollingParams {
   enum class Model { kNone, kEpsd };
   Model model = Model::kNone;
-  double friction = 0.0;        // mu_r (dimensionless; M_m = mu_r R_eff |F_n|)
-  double damping_ratio = 0.3;   // eta_r (Ai et al. use 0.3)
+  double friction = 0.0;       // mu_r (dimensionless; M_m = mu_r R_eff |F_n|)
+  double damping_ratio = 0.3;  // eta_r (Ai et al. use 0.3)
 };
 
 struct NoRolling {
@@ -47,13 +47,14 @@ struct EpsdRolling {
   double mu_r = 0.0, eta_r = 0.0, k_n = 0.0;
 
   EpsdRolling() = default;
-  EpsdRolling(const RollingParams& p, double k_n_) : mu_r(p.friction), eta_r(p.damping_ratio), k_n(k_n_) {}
+  EpsdRolling(const RollingParams& p, double k_n_)
+      : mu_r(p.friction), eta_r(p.damping_ratio), k_n(k_n_) {}
 
   // One step of the rolling spring for a contact with normal n, relative angular
   // velocity w = w_a - w_b, effective radius reff, rolling inertia I_r and |F_n|.
   // Updates the spring torque mk and returns the torque m on the first sphere.
-  void torque(const double n[3], const double w[3], double reff, double inertia_r, double fn_abs, double dt,
-              double mk[3], double m[3]) const {
+  void torque(const double n[3], const double w[3], double reff, double inertia_r, double fn_abs,
+              double dt, double mk[3], double m[3]) const {
     const double wn = w[0] * n[0] + w[1] * n[1] + w[2] * n[2];
     const double wr[3] = {w[0] - wn * n[0], w[1] - wn * n[1], w[2] - wn * n[2]};
     const double kr = kStiffnessFactor * k_n * mu_r * mu_r * reff * reff;

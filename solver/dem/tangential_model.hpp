@@ -35,9 +35,9 @@ struct NoTangential {
 
 struct LinearHistoryTangential {
   static constexpr bool kEnabled = true;
-  double k_t = 0.0;      // N/m
+  double k_t = 0.0;  // N/m
   double mu = 0.0;
-  double gamma = 0.0;    // kg/s, when not restitution-based
+  double gamma = 0.0;              // kg/s, when not restitution-based
   double gamma_per_sqrt_m = -1.0;  // >= 0: gamma_t = this * sqrt(m12) (restitution given)
 
   LinearHistoryTangential() = default;
@@ -52,13 +52,15 @@ struct LinearHistoryTangential {
     }
   }
   // Tangential dashpot for a contact of reduced mass m12 (the wall: m12 = m).
-  double gamma_for(double m12) const { return gamma_per_sqrt_m >= 0.0 ? gamma_per_sqrt_m * std::sqrt(m12) : gamma; }
+  double gamma_for(double m12) const {
+    return gamma_per_sqrt_m >= 0.0 ? gamma_per_sqrt_m * std::sqrt(m12) : gamma;
+  }
 
   // One step of the spring: rotates xi into the plane normal to n, adds v_t dt, and
   // returns the force ft on the first sphere; xi is left at the sliding limit if the
   // contact slides. fn_abs = |F_n|.
-  void force(const double n[3], const double vt[3], double gamma_t, double fn_abs, double dt, double xi[3],
-             double ft[3]) const {
+  void force(const double n[3], const double vt[3], double gamma_t, double fn_abs, double dt,
+             double xi[3], double ft[3]) const {
     const double xx = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
     if (xx > 0.0) {
       const double xn = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2];

@@ -7,7 +7,8 @@ namespace sphdem {
 
 void CellList::build(const double* x, const double* y, const double* z, std::size_t n,
                      double max_cutoff, int reach) {
-  if (!(max_cutoff > 0) || reach < 1) throw std::invalid_argument("CellList: cut-off must be > 0, reach >= 1");
+  if (!(max_cutoff > 0) || reach < 1)
+    throw std::invalid_argument("CellList: cut-off must be > 0, reach >= 1");
   const double cell_size = max_cutoff / reach;
   reach_ = reach;
   n_ = n;
@@ -41,7 +42,8 @@ void CellList::build(const double* x, const double* y, const double* z, std::siz
     const int cx = clampi(static_cast<int>((x[i] - lo_[0]) * inv_), nc_[0]);
     const int cy = clampi(static_cast<int>((y[i] - lo_[1]) * inv_), nc_[1]);
     const int cz = clampi(static_cast<int>((z[i] - lo_[2]) * inv_), nc_[2]);
-    const std::uint32_t c = static_cast<std::uint32_t>((static_cast<std::size_t>(cz) * nc_[1] + cy) * nc_[0] + cx);
+    const std::uint32_t c =
+        static_cast<std::uint32_t>((static_cast<std::size_t>(cz) * nc_[1] + cy) * nc_[0] + cx);
     cell_of_[i] = c;
     ++start_[c + 1];
   }

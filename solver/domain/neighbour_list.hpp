@@ -23,8 +23,8 @@ struct NeighbourList {
   // when exclude_self (query i and binned i are the same particle). With half, a pair
   // of query points is listed once (j > i); points j >= n_query (halo copies) are
   // always listed, since their owners compute the mirror pair themselves.
-  void build(const CellList& cells, const double* x, const double* y, const double* z, std::size_t n_query,
-             double rc, bool exclude_self, bool half = false);
+  void build(const CellList& cells, const double* x, const double* y, const double* z,
+             std::size_t n_query, double rc, bool exclude_self, bool half = false);
 
  private:
   CompressedRowBuilder rows_;

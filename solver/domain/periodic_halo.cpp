@@ -18,9 +18,9 @@ void PeriodicHalo::build(const Box& box, double width, const double* x, const do
     if (!box.periodic[d]) continue;
     const double L = box.length(d);
     if (width > L)  // one shift of +-L per axis reaches every image within width
-      throw std::runtime_error("periodic box axis " + std::to_string(d) + " (" +
-                               std::to_string(L) + " m) is narrower than the halo width (" +
-                               std::to_string(width) + " m)");
+      throw std::runtime_error("periodic box axis " + std::to_string(d) + " (" + std::to_string(L) +
+                               " m) is narrower than the halo width (" + std::to_string(width) +
+                               " m)");
     // Images of owned particles and of the ghosts made along earlier axes (edges, corners).
     const std::size_t n_before = source_.size();
     auto consider = [&](std::uint32_t src, double sx, double sy, double sz) {

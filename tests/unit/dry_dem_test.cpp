@@ -87,7 +87,8 @@ TEST(DryDem, SlidingSphereRollsAtFiveSevenths) {
   // net friction impulse, is zero: afterwards v = v0 - mu g t exactly.
   const Scene sc = load_scene_text(
       kDrop, "dry_drop.yaml",
-      {"particles.0.position=[0.001, 0.001, 5e-5]", "particles.0.velocity=[0.02, 0, 0]", "contact.restitution=0.3",
+      {"particles.0.position=[0.001, 0.001, 5e-5]", "particles.0.velocity=[0.02, 0, 0]",
+       "contact.restitution=0.3",
        "contact.tangential={model: linear_history, friction: 0.3, restitution: 0.5}"});
   Simulation sim(sc);
   const double t_roll = v0 / (mu * g * (1.0 + m * h * h / inertia));
@@ -97,7 +98,8 @@ TEST(DryDem, SlidingSphereRollsAtFiveSevenths) {
     sim.step();
     const DemParticles& s = sim.spheres();
     const double slip = s.vx[0] - s.z[0] * s.wy[0];
-    if (t_stick < 0 && slip <= 0) t_stick = sim.time() - (sim.time() - prev_t) * slip / (slip - prev_slip);
+    if (t_stick < 0 && slip <= 0)
+      t_stick = sim.time() - (sim.time() - prev_t) * slip / (slip - prev_slip);
     prev_slip = slip;
     prev_t = sim.time();
     if (t_stick < 0 && sim.time() > 0.25 * t_roll && sim.time() < 0.9 * t_roll) {  // sliding
@@ -105,8 +107,9 @@ TEST(DryDem, SlidingSphereRollsAtFiveSevenths) {
     }
   }
   const DemParticles& s = sim.spheres();
-  std::printf("stick at %.6g s (closed form %.6g s), rolling at %.8g v0 (closed form %.8g, 5/7 = %.8g)\n", t_stick,
-              t_roll, s.vx[0] / v0, v_roll / v0, 5.0 / 7.0);
+  std::printf(
+      "stick at %.6g s (closed form %.6g s), rolling at %.8g v0 (closed form %.8g, 5/7 = %.8g)\n",
+      t_stick, t_roll, s.vx[0] / v0, v_roll / v0, 5.0 / 7.0);
   EXPECT_NEAR(t_stick, t_roll, 0.02 * t_roll);  // found at SPH-step resolution (2e-5 s)
   EXPECT_NEAR(s.vx[0], v_roll, 1e-5 * v0);
   EXPECT_NEAR(s.z[0] * s.wy[0], s.vx[0], 1e-5 * v0);  // rolling without slip

@@ -2,13 +2,13 @@
 //   W(r,h) = 21/(16 pi h^3) (1 - q/2)^4 (2q + 1),  q = r/h.
 // Every expected value below is a quadrature, a lattice sum, a finite difference or
 // the closed form written out here, never a number taken from the code under test.
+#include "sph/kernel.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 #include <limits>
-
-#include "sph/kernel.hpp"
 
 namespace {
 
@@ -30,7 +30,9 @@ double radial_integral(const std::function<double(double)>& g, double h) {
 }
 
 // dW/dr from the gradient: grad_a W = grad_factor * (r_a - r_b), so dW/dr = grad_factor * r.
-double dw_dr(double r, double h) { return kernel::grad_factor(r * r, h) * r; }
+double dw_dr(double r, double h) {
+  return kernel::grad_factor(r * r, h) * r;
+}
 
 // Sum of W(x - x0) dx^3 over a cubic lattice of spacing dx with an arbitrary offset x0.
 double lattice_sum(double h, double dx, const double x0[3]) {
@@ -101,8 +103,10 @@ TEST(Kernel, ClosedFormAtSeveralRadii) {
   const double h = 0.37;
   for (double q : {0.1, 0.5, 1.0, 1.5, 1.9}) {
     const double r = q * h;
-    const double expected = 21.0 / (16.0 * kPi * std::pow(h, 3)) * std::pow(1.0 - q / 2.0, 4) * (2.0 * q + 1.0);
-    EXPECT_NEAR(kernel::w(r * r, h), expected, 1e-13 * kernel::w(0.0, h)) << "q = " << q;  // a few roundings
+    const double expected =
+        21.0 / (16.0 * kPi * std::pow(h, 3)) * std::pow(1.0 - q / 2.0, 4) * (2.0 * q + 1.0);
+    EXPECT_NEAR(kernel::w(r * r, h), expected, 1e-13 * kernel::w(0.0, h))
+        << "q = " << q;  // a few roundings
   }
 }
 
@@ -140,7 +144,9 @@ TEST(Kernel, GradientMatchesFiniteDifference) {
     const double step = 1e-5 * h;
     for (double q : {0.05, 0.3, 0.7, 1.0, 1.3, 1.7, 1.95}) {
       const double r = q * h;
-      const double fd = (kernel::w((r + step) * (r + step), h) - kernel::w((r - step) * (r - step), h)) / (2 * step);
+      const double fd =
+          (kernel::w((r + step) * (r + step), h) - kernel::w((r - step) * (r - step), h)) /
+          (2 * step);
       // truncation step^2 W'''/6 ~ 1e-10 scale; round-off eps W/step ~ 1e-11 scale
       EXPECT_NEAR(dw_dr(r, h), fd, 1e-8 * scale) << "h = " << h << ", q = " << q;
     }
@@ -154,7 +160,8 @@ TEST(Kernel, SmoothingLengthDerivativeMatchesFiniteDifference) {
     for (double q : {0.0, 0.3, 0.7, 1.0, 1.3, 1.7, 1.95}) {
       const double r2 = (q * h) * (q * h);
       const double fd = (kernel::w(r2, h + step) - kernel::w(r2, h - step)) / (2 * step);
-      EXPECT_NEAR(kernel::dw_dh(r2, h), fd, 1e-8 * scale) << "h = " << h << ", q = " << q;  // as above
+      EXPECT_NEAR(kernel::dw_dh(r2, h), fd, 1e-8 * scale)
+          << "h = " << h << ", q = " << q;  // as above
     }
   }
 }

@@ -29,7 +29,11 @@ using NeighbourSets = std::vector<std::vector<Neighbour>>;
 struct Points {
   std::vector<double> x, y, z;
   std::size_t size() const { return x.size(); }
-  void push(double a, double b, double c) { x.push_back(a); y.push_back(b); z.push_back(c); }
+  void push(double a, double b, double c) {
+    x.push_back(a);
+    y.push_back(b);
+    z.push_back(c);
+  }
 };
 
 Box make_box() {
@@ -46,7 +50,8 @@ Points make_points(const Box& box, std::size_t n, unsigned seed) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Points p;
   auto at = [&](double fx, double fy, double fz) {
-    p.push(box.lo[0] + fx * box.length(0), box.lo[1] + fy * box.length(1), box.lo[2] + fz * box.length(2));
+    p.push(box.lo[0] + fx * box.length(0), box.lo[1] + fy * box.length(1),
+           box.lo[2] + fz * box.length(2));
   };
   for (std::size_t i = 0; i < n; ++i) at(u(gen), u(gen), u(gen));
   const double e = 1e-9;
@@ -67,8 +72,10 @@ NeighbourSets brute_force(const Box& box, const Points& p, double rc) {
     for (std::size_t j = 0; j < p.size(); ++j)
       for (int sx = -1; sx <= 1; ++sx)
         for (int sy = -1; sy <= 1; ++sy) {
-          const double dx = p.x[i] - (p.x[j] + sx * Lx), dy = p.y[i] - (p.y[j] + sy * Ly), dz = p.z[i] - p.z[j];
-          if (dx * dx + dy * dy + dz * dz < rc2) out[i].emplace_back(static_cast<std::uint32_t>(j), sx, sy);
+          const double dx = p.x[i] - (p.x[j] + sx * Lx), dy = p.y[i] - (p.y[j] + sy * Ly),
+                       dz = p.z[i] - p.z[j];
+          if (dx * dx + dy * dy + dz * dz < rc2)
+            out[i].emplace_back(static_cast<std::uint32_t>(j), sx, sy);
         }
     std::sort(out[i].begin(), out[i].end());
   }
@@ -77,7 +84,8 @@ NeighbourSets brute_force(const Box& box, const Points& p, double rc) {
 
 // The solver's pipeline: halo of width rc, cell list over owned + ghosts, neighbour list
 // for the owned points; each neighbour mapped back to (owned source, image shift).
-NeighbourSets via_solver(const Box& box, const Points& owned, double rc, int reach, bool exclude_self) {
+NeighbourSets via_solver(const Box& box, const Points& owned, double rc, int reach,
+                         bool exclude_self) {
   const std::size_t n = owned.size();
   PeriodicHalo halo;
   halo.build(box, rc, owned.x.data(), owned.y.data(), owned.z.data(), n);
@@ -114,22 +122,25 @@ NeighbourSets via_solver(const Box& box, const Points& owned, double rc, int rea
   return out;
 }
 
-void expect_same(const NeighbourSets& got, const NeighbourSets& want, const Points& p, bool nearest_only) {
+void expect_same(const NeighbourSets& got, const NeighbourSets& want, const Points& p,
+                 bool nearest_only) {
   ASSERT_EQ(got.size(), want.size());
   std::size_t pairs = 0, across = 0, mismatched = 0;
   for (std::size_t i = 0; i < want.size(); ++i) {
     pairs += want[i].size();
     for (const auto& nb : want[i]) across += (std::get<1>(nb) != 0 || std::get<2>(nb) != 0);
     if (got[i] != want[i] && ++mismatched <= 5)
-      ADD_FAILURE() << "point " << i << " at (" << p.x[i] << ", " << p.y[i] << ", " << p.z[i] << "): "
-                    << got[i].size() << " neighbours from the list, " << want[i].size() << " by brute force";
+      ADD_FAILURE() << "point " << i << " at (" << p.x[i] << ", " << p.y[i] << ", " << p.z[i]
+                    << "): " << got[i].size() << " neighbours from the list, " << want[i].size()
+                    << " by brute force";
   }
   EXPECT_EQ(mismatched, 0u);
   // rc < L/2: at most one image of each source, i.e. the minimum image; above L/2
   // some sources must appear through two images (the brute force has them too)
   std::size_t repeated = 0;
   for (std::size_t i = 0; i < got.size(); ++i)
-    for (std::size_t k = 1; k < got[i].size(); ++k) repeated += std::get<0>(got[i][k]) == std::get<0>(got[i][k - 1]);
+    for (std::size_t k = 1; k < got[i].size(); ++k)
+      repeated += std::get<0>(got[i][k]) == std::get<0>(got[i][k - 1]);
   if (nearest_only)
     EXPECT_EQ(repeated, 0u);
   else
@@ -152,17 +163,20 @@ TEST_P(NeighbourListVsBruteForce, SameSetsIncludingImages) {
   const auto [rc, reach] = GetParam();
   const NeighbourSets with_self = brute_force(box, p, rc);
   for (bool exclude_self : {true, false}) {
-    SCOPED_TRACE(testing::Message() << "rc = " << rc << " reach = " << reach << " exclude_self = " << exclude_self);
+    SCOPED_TRACE(testing::Message()
+                 << "rc = " << rc << " reach = " << reach << " exclude_self = " << exclude_self);
     NeighbourSets want = with_self;
     if (exclude_self)
       for (std::size_t i = 0; i < p.size(); ++i)
-        want[i].erase(std::remove(want[i].begin(), want[i].end(), Neighbour{static_cast<std::uint32_t>(i), 0, 0}),
+        want[i].erase(std::remove(want[i].begin(), want[i].end(),
+                                  Neighbour{static_cast<std::uint32_t>(i), 0, 0}),
                       want[i].end());
     const NeighbourSets got = via_solver(box, p, rc, reach, exclude_self);
     expect_same(got, want, p, 2.0 * rc < std::min(box.length(0), box.length(1)));
     // self appears exactly once (shift 0) without exclude_self, never with it
     for (std::size_t i = 0; i < p.size(); ++i) {
-      const auto self = std::count(got[i].begin(), got[i].end(), Neighbour{static_cast<std::uint32_t>(i), 0, 0});
+      const auto self =
+          std::count(got[i].begin(), got[i].end(), Neighbour{static_cast<std::uint32_t>(i), 0, 0});
       EXPECT_EQ(self, exclude_self ? 0 : 1) << "point " << i;
     }
   }
@@ -171,21 +185,24 @@ TEST_P(NeighbourListVsBruteForce, SameSetsIncludingImages) {
 // Ly = 0.8, so rc = 0.399 is just under half the narrowest periodic width; 0.6 is above
 // half of both (every point within 0.6 of a pair of faces sees two images of some sources).
 INSTANTIATE_TEST_SUITE_P(CutOffs, NeighbourListVsBruteForce,
-                         ::testing::Values(Case{0.12, 1}, Case{0.12, 2}, Case{0.25, 1}, Case{0.25, 2},
-                                           Case{0.399, 1}, Case{0.399, 2}, Case{0.6, 1}, Case{0.6, 2}),
+                         ::testing::Values(Case{0.12, 1}, Case{0.12, 2}, Case{0.25, 1},
+                                           Case{0.25, 2}, Case{0.399, 1}, Case{0.399, 2},
+                                           Case{0.6, 1}, Case{0.6, 2}),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            // e.g. rc0p399_reach2 for rc = 0.399 box units
-                           return "rc0p" + std::to_string(std::lround(info.param.rc * 1000)) + "_reach" +
-                                  std::to_string(info.param.reach);
+                           return "rc0p" + std::to_string(std::lround(info.param.rc * 1000)) +
+                                  "_reach" + std::to_string(info.param.reach);
                          });
 
 TEST(PeriodicHalo, RefusesWidthAboveTheBox) {
   const Box box = make_box();  // periodic Ly = 0.8 is the narrowest; z (0.6) is not periodic
   const Points p = make_points(box, 20, 7u);
   PeriodicHalo halo;
-  EXPECT_NO_THROW(halo.build(box, 0.8, p.x.data(), p.y.data(), p.z.data(), p.size()));   // = Ly
-  EXPECT_THROW(halo.build(box, 0.8001, p.x.data(), p.y.data(), p.z.data(), p.size()), std::runtime_error);
-  EXPECT_THROW(halo.build(box, 1.2, p.x.data(), p.y.data(), p.z.data(), p.size()), std::runtime_error);
+  EXPECT_NO_THROW(halo.build(box, 0.8, p.x.data(), p.y.data(), p.z.data(), p.size()));  // = Ly
+  EXPECT_THROW(halo.build(box, 0.8001, p.x.data(), p.y.data(), p.z.data(), p.size()),
+               std::runtime_error);
+  EXPECT_THROW(halo.build(box, 1.2, p.x.data(), p.y.data(), p.z.data(), p.size()),
+               std::runtime_error);
 }
 
 TEST(PeriodicHalo, GhostsCoverEveryImageWithinTheWidth) {
@@ -210,7 +227,8 @@ TEST(PeriodicHalo, GhostsCoverEveryImageWithinTheWidth) {
   for (std::uint32_t i = 0; i < n; ++i)
     for (int sx = -1; sx <= 1; ++sx)
       for (int sy = -1; sy <= 1; ++sy)
-        if ((sx || sy) && inside(0, p.x[i] + sx * box.length(0)) && inside(1, p.y[i] + sy * box.length(1)))
+        if ((sx || sy) && inside(0, p.x[i] + sx * box.length(0)) &&
+            inside(1, p.y[i] + sy * box.length(1)))
           want.emplace_back(i, sx, sy);
   std::sort(got.begin(), got.end());
   std::sort(want.begin(), want.end());
@@ -254,7 +272,7 @@ TEST(Box, WrapOriginAtZero) {
   box.hi = {4e-3, 4e-3, 6e-3};
   for (int d : {0, 1})
     for (double v : wrap_probes(box, d)) expect_wraps_into_box(box, d, v);
-  EXPECT_EQ(box.wrap(0, 4e-3), 0.0);  // the upper face maps to the lower one
+  EXPECT_EQ(box.wrap(0, 4e-3), 0.0);   // the upper face maps to the lower one
   EXPECT_EQ(box.wrap(2, -5.0), -5.0);  // non-periodic axis untouched
   EXPECT_EQ(box.wrap(2, 0.61), 0.61);
 }

@@ -28,21 +28,26 @@ constexpr double kPi = 3.14159265358979323846;
 
 // 4 x 4 mm periodic column; the group text goes under `particles:`.
 std::string scene_text(const std::string& species, const std::string& groups, double lz = 0.006) {
-  return "domain: {size: [0.004, 0.004, " + std::to_string(lz) + "]}\nspecies:\n" + species + "particles:\n" + groups;
+  return "domain: {size: [0.004, 0.004, " + std::to_string(lz) + "]}\nspecies:\n" + species +
+         "particles:\n" + groups;
 }
 const std::string kGlass = "  - {name: glass, diameter: 1.0e-4, density: 2500}\n";
 
-std::string random_group(double voidage, long seed, const std::string& zmin = "0", const std::string& zmax = "0.0048",
-                         const std::string& species = "glass") {
-  return "  - {type: random, species: " + species + ", min: [0, 0, " + zmin + "], max: [0.004, 0.004, " + zmax +
-         "], voidage: " + std::to_string(voidage) + ", seed: " + std::to_string(seed) + "}\n";
+std::string random_group(double voidage, long seed, const std::string& zmin = "0",
+                         const std::string& zmax = "0.0048", const std::string& species = "glass") {
+  return "  - {type: random, species: " + species + ", min: [0, 0, " + zmin +
+         "], max: [0.004, 0.004, " + zmax + "], voidage: " + std::to_string(voidage) +
+         ", seed: " + std::to_string(seed) + "}\n";
 }
 
-RandomPacking pack(const Scene& sc, std::size_t group = 0) { return random_packing(sc, group, DemParticles{}); }
+RandomPacking pack(const Scene& sc, std::size_t group = 0) {
+  return random_packing(sc, group, DemParticles{});
+}
 
 // Largest overlap (r_i + r_j - distance) over all pairs, minimum image in x and y.
-double max_overlap(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
-                   const std::vector<double>& r, double Lx, double Ly) {
+double max_overlap(const std::vector<double>& x, const std::vector<double>& y,
+                   const std::vector<double>& z, const std::vector<double>& r, double Lx,
+                   double Ly) {
   double worst = -1.0;
   const std::size_t n = x.size();
   for (std::size_t i = 0; i < n; ++i)
@@ -70,7 +75,8 @@ double solid_volume(const RandomPacking& P) {
 
 TEST(RandomPacking, NoOverlapAcrossThePeriodicFacesAndInsideTheRegion) {
   // Dense for RSA (solid fraction 0.3) so that many pairs nearly touch.
-  const Scene sc = load_scene_text(scene_text(kGlass, random_group(0.7, 11, "0", "0.0012")), "rsa.yaml");
+  const Scene sc =
+      load_scene_text(scene_text(kGlass, random_group(0.7, 11, "0", "0.0012")), "rsa.yaml");
   const RandomPacking P = pack(sc);
   ASSERT_GT(P.x.size(), 4000u);
   EXPECT_LE(max_overlap(P.x, P.y, P.z, P.radius, 0.004, 0.004), 1e-12 * 1e-4);
@@ -91,13 +97,16 @@ TEST(RandomPacking, NoOverlapAcrossThePeriodicFacesAndInsideTheRegion) {
 TEST(RandomPacking, NoOverlapWithEarlierGroupsAndInsideAPartialRegion) {
   // A lattice block, a single sphere, then a polydisperse random group over them, in a
   // region that does not span the periodic width (so each sphere lies inside it).
-  const std::string species = kGlass +
-                              "  - {name: sand, density: 2650, size_distribution: {law: uniform, min: 6.0e-5, max: "
-                              "1.6e-4}}\n";
+  const std::string species =
+      kGlass +
+      "  - {name: sand, density: 2650, size_distribution: {law: uniform, min: 6.0e-5, max: "
+      "1.6e-4}}\n";
   const std::string groups =
-      "  - {type: lattice, species: glass, min: [0, 0, 0.001], max: [0.004, 0.004, 0.0015], voidage: 0.8}\n"
+      "  - {type: lattice, species: glass, min: [0, 0, 0.001], max: [0.004, 0.004, 0.0015], "
+      "voidage: 0.8}\n"
       "  - {type: single, species: glass, position: [0.0034, 0.002, 0.0018]}\n"
-      "  - {type: random, species: sand, min: [0.0005, 0, 0.0005], max: [0.0035, 0.004, 0.002], voidage: 0.75, "
+      "  - {type: random, species: sand, min: [0.0005, 0, 0.0005], max: [0.0035, 0.004, 0.002], "
+      "voidage: 0.75, "
       "seed: 5}\n";
   const Scene sc = load_scene_text(scene_text(species, groups), "rsa.yaml");
   FluidParticles f;
@@ -123,22 +132,26 @@ TEST(RandomPacking, AchievedVoidageIsTheTargetUpToHalfASphere) {
   // Equal spheres: N = round((1 - eps) V / V_p), so |eps_N - eps| <= V_p / (2 V).
   const double V = 0.004 * 0.004 * 0.0048, Vp = kPi * 1e-12 / 6.0;
   for (double eps : {0.9, 0.85, 0.77}) {
-    const RandomPacking P = pack(load_scene_text(scene_text(kGlass, random_group(eps, 1)), "rsa.yaml"));
+    const RandomPacking P =
+        pack(load_scene_text(scene_text(kGlass, random_group(eps, 1)), "rsa.yaml"));
     EXPECT_EQ(P.x.size(), static_cast<std::size_t>(std::lround((1 - eps) * V / Vp))) << eps;
     EXPECT_LE(std::abs(P.voidage - eps), 0.5 * Vp / V) << eps;
     EXPECT_NEAR(P.voidage, 1 - solid_volume(P) / V, 1e-12);
   }
   // A size law: within half the largest sphere's volume.
   const std::string psd =
-      "  - {name: sand, density: 2650, size_distribution: {law: lognormal, median: 1.0e-4, sigma_ln: 0.25, "
+      "  - {name: sand, density: 2650, size_distribution: {law: lognormal, median: 1.0e-4, "
+      "sigma_ln: 0.25, "
       "min: 5.0e-5, max: 2.0e-4}}\n";
-  const RandomPacking P = pack(load_scene_text(scene_text(psd, random_group(0.88, 2, "0", "0.0048", "sand")), "r.yaml"));
+  const RandomPacking P = pack(
+      load_scene_text(scene_text(psd, random_group(0.88, 2, "0", "0.0048", "sand")), "r.yaml"));
   EXPECT_LE(std::abs(P.voidage - 0.88), 0.5 * kPi * 8e-12 / 6.0 / V);
 }
 
 TEST(RandomPacking, HomogeneousInSlabsAndOctants) {
   // The thesis suspension: 100 um spheres at eps = 0.9 from z = 0 to 4.8 mm (14668 spheres).
-  const RandomPacking P = pack(load_scene_text(scene_text(kGlass, random_group(0.9, 42)), "rsa.yaml"));
+  const RandomPacking P =
+      pack(load_scene_text(scene_text(kGlass, random_group(0.9, 42)), "rsa.yaml"));
   const double N = static_cast<double>(P.x.size()), r = 0.5e-4;
   const double z0 = r, z1 = 0.0048 - r;  // where centres may lie
   // 12 horizontal slabs (0.4 mm, 4 diameters each) of the centre range.
@@ -161,10 +174,12 @@ TEST(RandomPacking, HomogeneousInSlabsAndOctants) {
 
 TEST(RandomPacking, MixtureFractionsAndPerSpeciesHomogeneity) {
   // Two species (the thesis' two densities and sizes) by number 30 / 70.
-  const std::string species = "  - {name: big, diameter: 1.2e-4, density: 2450}\n"
-                              "  - {name: small, diameter: 1.0e-4, density: 1500}\n";
-  const std::string group = "  - {type: random, species: [big, small], fractions: [0.3, 0.7], min: [0, 0, 0], "
-                            "max: [0.004, 0.004, 0.0048], voidage: 0.87, seed: 9}\n";
+  const std::string species =
+      "  - {name: big, diameter: 1.2e-4, density: 2450}\n"
+      "  - {name: small, diameter: 1.0e-4, density: 1500}\n";
+  const std::string group =
+      "  - {type: random, species: [big, small], fractions: [0.3, 0.7], min: [0, 0, 0], "
+      "max: [0.004, 0.004, 0.0048], voidage: 0.87, seed: 9}\n";
   const Scene sc = load_scene_text(scene_text(species, group), "rsa.yaml");
   const RandomPacking P = pack(sc);
   std::vector<double> count(2, 0);
@@ -183,17 +198,20 @@ TEST(RandomPacking, MixtureFractionsAndPerSpeciesHomogeneity) {
     for (std::size_t i = 0; i < P.z.size(); ++i)
       if (P.species[i] == s) n[std::min(5, static_cast<int>((P.z[i] - z0) / (z1 - z0) * 6))] += 1;
     for (int k = 0; k < 6; ++k)
-      EXPECT_NEAR(n[k], count[s] / 6, 4 * std::sqrt(count[s] / 6 * (5.0 / 6))) << "species " << s << " slab " << k;
+      EXPECT_NEAR(n[k], count[s] / 6, 4 * std::sqrt(count[s] / 6 * (5.0 / 6)))
+          << "species " << s << " slab " << k;
   }
   EXPECT_LE(max_overlap(P.x, P.y, P.z, P.radius, 0.004, 0.004), 1e-16);
 }
 
 TEST(RandomPacking, SameSeedIsBitIdenticalOtherSeedDiffers) {
   const std::string psd =
-      "  - {name: sand, density: 2650, size_distribution: {law: normal, mean: 1.0e-4, std: 2.0e-5, min: 6.0e-5, "
+      "  - {name: sand, density: 2650, size_distribution: {law: normal, mean: 1.0e-4, std: 2.0e-5, "
+      "min: 6.0e-5, "
       "max: 1.4e-4}}\n";
   auto at = [&](long seed) {
-    return pack(load_scene_text(scene_text(psd, random_group(0.9, seed, "0", "0.002", "sand")), "rsa.yaml"));
+    return pack(load_scene_text(scene_text(psd, random_group(0.9, seed, "0", "0.002", "sand")),
+                                "rsa.yaml"));
   };
   const RandomPacking a = at(123), b = at(123), c = at(124);
   EXPECT_TRUE(bit_identical(a.x, b.x));
@@ -210,20 +228,23 @@ TEST(RandomPacking, SameSeedIsBitIdenticalOtherSeedDiffers) {
 
 TEST(RandomPacking, JamsAtVoidageHalfWithAClearError) {
   // Equal spheres at eps = 0.5 (solid fraction 0.5 > RSA's saturation 0.384).
-  const Scene sc = load_scene_text(scene_text(kGlass, random_group(0.5, 1, "0", "0.0006")), "jam.yaml");
+  const Scene sc =
+      load_scene_text(scene_text(kGlass, random_group(0.5, 1, "0", "0.0006")), "jam.yaml");
   try {
     pack(sc);
     FAIL() << "eps = 0.5 was reached by RSA";
   } catch (const SceneError& e) {
     const std::string m = e.what();
-    for (const char* part : {"jam.yaml", "'particles.0.voidage'", "jammed", "0.384", "raise the voidage"})
+    for (const char* part :
+         {"jam.yaml", "'particles.0.voidage'", "jammed", "0.384", "raise the voidage"})
       EXPECT_NE(m.find(part), std::string::npos) << part << " missing in: " << m;
   }
 }
 
 TEST(RandomPacking, RegionErrors) {
   // Thinner than a sphere in z.
-  const Scene thin = load_scene_text(scene_text(kGlass, random_group(0.9, 1, "0.001", "0.00105")), "r.yaml");
+  const Scene thin =
+      load_scene_text(scene_text(kGlass, random_group(0.9, 1, "0.001", "0.00105")), "r.yaml");
   try {
     pack(thin);
     FAIL();
@@ -232,7 +253,8 @@ TEST(RandomPacking, RegionErrors) {
   }
   // Less than half a sphere of solid at this voidage.
   const std::string tiny =
-      "  - {type: random, species: glass, min: [0, 0, 0], max: [0.0001, 0.0001, 0.0001], voidage: 0.9}\n";
+      "  - {type: random, species: glass, min: [0, 0, 0], max: [0.0001, 0.0001, 0.0001], voidage: "
+      "0.9}\n";
   try {
     pack(load_scene_text(scene_text(kGlass, tiny), "r.yaml"));
     FAIL();

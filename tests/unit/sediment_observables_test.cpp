@@ -106,16 +106,17 @@ TEST(SizeThirds, PercentilesAndThirdsByHeight) {
   EXPECT_DOUBLE_EQ(number_percentile({1, 2, 3, 4, 5}, 0.5), 3.0);
   EXPECT_DOUBLE_EQ(number_percentile({1, 2, 3, 4, 5}, 1.0), 5.0);
   // 10 spheres, given out of height order: the coarse ones low. Thirds of 4, 3, 3.
-  const DemParticles s = spheres({9, 1, 8, 2, 7, 3, 6, 4, 5, 10},
-                                 {1.1e-3, 3.9e-3, 1.2e-3, 3.7e-3, 1.3e-3, 3.5e-3, 2.1e-3, 3.3e-3, 2.2e-3, 1.0e-3});
+  const DemParticles s =
+      spheres({9, 1, 8, 2, 7, 3, 6, 4, 5, 10},
+              {1.1e-3, 3.9e-3, 1.2e-3, 3.7e-3, 1.3e-3, 3.5e-3, 2.1e-3, 3.3e-3, 2.2e-3, 1.0e-3});
   const SizeThirds t = size_thirds(s, 1.0e-3, 4.0e-3, 3);
   ASSERT_EQ(t.bin_edges.size(), 4u);
   EXPECT_EQ(t.third[0].count, 4u);
   EXPECT_EQ(t.third[1].count, 3u);
   EXPECT_EQ(t.third[2].count, 3u);
   EXPECT_NEAR(t.third[0].mean_d, (3.9e-3 + 3.7e-3 + 3.5e-3 + 3.3e-3) / 4, 1e-15);  // z = 1..4
-  EXPECT_NEAR(t.third[1].mean_d, (2.2e-3 + 2.1e-3 + 1.3e-3) / 3, 1e-15);            // z = 5..7
-  EXPECT_NEAR(t.third[2].mean_d, (1.2e-3 + 1.1e-3 + 1.0e-3) / 3, 1e-15);            // z = 8..10
+  EXPECT_NEAR(t.third[1].mean_d, (2.2e-3 + 2.1e-3 + 1.3e-3) / 3, 1e-15);           // z = 5..7
+  EXPECT_NEAR(t.third[2].mean_d, (1.2e-3 + 1.1e-3 + 1.0e-3) / 3, 1e-15);           // z = 8..10
   EXPECT_NEAR(t.third[1].d50, 2.1e-3, 1e-15);
   EXPECT_EQ(t.third[0].z_min, 1.0);
   EXPECT_EQ(t.third[0].z_max, 4.0);
@@ -130,7 +131,8 @@ TEST(BulkDensity, EqualsVoidageWeightedDensities) {
   g.spacing = {1.0, 1.0, 1.0};
   g.extent = {0, 1, 0, 1, 0, 3};  // layers at z = -1, 0, 1, 2
   // layer z = 0: eps 0.5 and 0.3 (mean 0.4); z = 1: 0.9; z = 2: 1
-  const std::vector<double> eps = {0.2, 0.2, 0.2, 0.2, 0.5, 0.3, 0.5, 0.3, 0.9, 0.9, 0.9, 0.9, 1, 1, 1, 1};
+  const std::vector<double> eps = {0.2, 0.2, 0.2, 0.2, 0.5, 0.3, 0.5, 0.3,
+                                   0.9, 0.9, 0.9, 0.9, 1,   1,   1,   1};
   const BulkDensityProfile p = bulk_density_profile(eps, g, 1000.0, 2650.0, 1.5);
   ASSERT_EQ(p.z.size(), 2u);  // z = -1 (below the wall) and z = 2 (above z_top) left out
   EXPECT_DOUBLE_EQ(p.z[0], 0.0);

@@ -29,8 +29,8 @@ namespace {
 constexpr std::size_t kDraws = 200000;
 
 SpeciesSpec species_with(const std::string& law_yaml) {
-  const Scene sc = load_scene_text("species:\n  - {name: s, density: 2500, size_distribution: " + law_yaml + "}\n",
-                                   "psd.yaml");
+  const Scene sc = load_scene_text(
+      "species:\n  - {name: s, density: 2500, size_distribution: " + law_yaml + "}\n", "psd.yaml");
   return sc.species.at(0);
 }
 
@@ -49,7 +49,9 @@ struct Reference {
   double lo, hi;
 };
 
-double phi_cdf(double x) { return 0.5 * (1.0 + std::erf(x / std::sqrt(2.0))); }
+double phi_cdf(double x) {
+  return 0.5 * (1.0 + std::erf(x / std::sqrt(2.0)));
+}
 
 Reference normal_ref(double mu, double s, double lo, double hi) {
   const double Z = phi_cdf((hi - mu) / s) - phi_cdf((lo - mu) / s);
@@ -60,8 +62,10 @@ Reference lognormal_ref(double median, double s, double lo, double hi) {
   const double m = std::log(median);
   const double Z = phi_cdf((std::log(hi) - m) / s) - phi_cdf((std::log(lo) - m) / s);
   return {[=](double d) { return std::exp(-0.5 * std::pow((std::log(d) - m) / s, 2)) / d; },
-          [=](double d) { return (phi_cdf((std::log(d) - m) / s) - phi_cdf((std::log(lo) - m) / s)) / Z; }, lo,
-          hi};
+          [=](double d) {
+            return (phi_cdf((std::log(d) - m) / s) - phi_cdf((std::log(lo) - m) / s)) / Z;
+          },
+          lo, hi};
 }
 Reference uniform_ref(double lo, double hi) {
   return {[](double) { return 1.0; }, [=](double d) { return (d - lo) / (hi - lo); }, lo, hi};
@@ -84,7 +88,8 @@ double ref_moment(const Reference& R, int k) {
 void expect_sample_matches(const SizeDistribution& L, const Reference& R) {
   const std::vector<double> d = draw(L, kDraws);
   const double N = static_cast<double>(d.size());
-  const double mu = ref_moment(R, 1), m2 = ref_moment(R, 2), m3 = ref_moment(R, 3), m4 = ref_moment(R, 4);
+  const double mu = ref_moment(R, 1), m2 = ref_moment(R, 2), m3 = ref_moment(R, 3),
+               m4 = ref_moment(R, 4);
   const double var = m2 - mu * mu;
   const double mu4 = m4 - 4 * mu * m3 + 6 * mu * mu * m2 - 3 * mu * mu * mu * mu;  // central
   double mean = 0;
@@ -126,7 +131,8 @@ void expect_sample_matches(const SizeDistribution& L, const Reference& R) {
 }  // namespace
 
 TEST(SizeDistribution, NormalQuantileInvertsTheCdf) {
-  for (double p : {1e-300, 1e-12, 1e-6, 0.01, 0.02425, 0.2, 0.5, 0.8, 0.97575, 0.99, 1 - 1e-6, 1 - 1e-12}) {
+  for (double p :
+       {1e-300, 1e-12, 1e-6, 0.01, 0.02425, 0.2, 0.5, 0.8, 0.97575, 0.99, 1 - 1e-6, 1 - 1e-12}) {
     const double x = normal_quantile(p);
     EXPECT_NEAR(normal_cdf(x), p, 1e-14 * std::max(p, 1e-3)) << p;
   }
@@ -143,18 +149,21 @@ TEST(SizeDistribution, UniformLaw) {
 
 TEST(SizeDistribution, TruncatedNormalLaw) {
   // Truncated asymmetrically: 2.67 std below the mean, 3.33 above.
-  const SpeciesSpec s = species_with("{law: normal, mean: 1.0e-4, std: 1.5e-5, min: 6.0e-5, max: 1.5e-4}");
+  const SpeciesSpec s =
+      species_with("{law: normal, mean: 1.0e-4, std: 1.5e-5, min: 6.0e-5, max: 1.5e-4}");
   expect_sample_matches(s.size, normal_ref(1e-4, 1.5e-5, 6e-5, 1.5e-4));
 }
 
 TEST(SizeDistribution, NormalTruncatedFarInATail) {
   // [mean + 2 std, mean + 4 std] keeps 2.3 % of the law: sampled through the mirrored tail.
-  const SpeciesSpec s = species_with("{law: normal, mean: 1.0e-4, std: 1.0e-5, min: 1.2e-4, max: 1.4e-4}");
+  const SpeciesSpec s =
+      species_with("{law: normal, mean: 1.0e-4, std: 1.0e-5, min: 1.2e-4, max: 1.4e-4}");
   expect_sample_matches(s.size, normal_ref(1e-4, 1e-5, 1.2e-4, 1.4e-4));
 }
 
 TEST(SizeDistribution, TruncatedLognormalLaw) {
-  const SpeciesSpec s = species_with("{law: lognormal, median: 1.0e-4, sigma_ln: 0.3, min: 5.0e-5, max: 2.5e-4}");
+  const SpeciesSpec s =
+      species_with("{law: lognormal, median: 1.0e-4, sigma_ln: 0.3, min: 5.0e-5, max: 2.5e-4}");
   expect_sample_matches(s.size, lognormal_ref(1e-4, 0.3, 5e-5, 2.5e-4));
   // d32 = E[d^3] / E[d^2]: above the median for a right-skewed law.
   EXPECT_GT(s.diameter, 1e-4);
@@ -162,8 +171,9 @@ TEST(SizeDistribution, TruncatedLognormalLaw) {
 }
 
 TEST(SizeDistribution, ListLawByNumberIsDealtExactly) {
-  const SpeciesSpec s = species_with("{law: list, diameters: [1.2e-4, 8.0e-5, 1.0e-4], fractions: [0.3, 0.2, 0.5], "
-                                     "basis: number}");
+  const SpeciesSpec s = species_with(
+      "{law: list, diameters: [1.2e-4, 8.0e-5, 1.0e-4], fractions: [0.3, 0.2, 0.5], "
+      "basis: number}");
   EXPECT_EQ(s.d_min(), 8e-5);
   EXPECT_EQ(s.d_max(), 1.2e-4);
   const std::vector<double> n = number_fractions(s.size);
@@ -172,10 +182,12 @@ TEST(SizeDistribution, ListLawByNumberIsDealtExactly) {
   // After every prefix of k draws, each class count is within one of n_i k.
   std::vector<double> count(3, 0);
   for (std::size_t k = 0; k < d.size(); ++k) {
-    const auto i = std::find(s.size.diameters.begin(), s.size.diameters.end(), d[k]) - s.size.diameters.begin();
+    const auto i = std::find(s.size.diameters.begin(), s.size.diameters.end(), d[k]) -
+                   s.size.diameters.begin();
     ASSERT_LT(i, 3);
     count[i] += 1;
-    for (int c = 0; c < 3; ++c) ASSERT_LE(std::abs(count[c] - n[c] * (k + 1)), 1.0) << "after " << k + 1;
+    for (int c = 0; c < 3; ++c)
+      ASSERT_LE(std::abs(count[c] - n[c] * (k + 1)), 1.0) << "after " << k + 1;
   }
   EXPECT_NEAR(size_moment(s.size, 1), 0.3 * 1.2e-4 + 0.2 * 8e-5 + 0.5 * 1e-4, 1e-18);
   EXPECT_EQ(size_quantile(s.size, 0.1), 8e-5);
@@ -186,7 +198,8 @@ TEST(SizeDistribution, ListLawByNumberIsDealtExactly) {
 
 TEST(SizeDistribution, ListLawByVolume) {
   // Half the solid volume in each size: number fractions n_i ~ f_i / d_i^3.
-  const SpeciesSpec s = species_with("{law: list, diameters: [1.0e-4, 2.0e-4], fractions: [0.5, 0.5], basis: volume}");
+  const SpeciesSpec s = species_with(
+      "{law: list, diameters: [1.0e-4, 2.0e-4], fractions: [0.5, 0.5], basis: volume}");
   const std::vector<double> n = number_fractions(s.size);
   EXPECT_DOUBLE_EQ(n[0], 8.0 / 9.0);
   EXPECT_DOUBLE_EQ(n[1], 1.0 / 9.0);
@@ -200,7 +213,8 @@ TEST(SizeDistribution, ListLawByVolume) {
 }
 
 TEST(SizeDistribution, SingleSizeSpecies) {
-  const Scene sc = load_scene_text("species: [{name: s, diameter: 1.0e-4, density: 2500}]\n", "psd.yaml");
+  const Scene sc =
+      load_scene_text("species: [{name: s, diameter: 1.0e-4, density: 2500}]\n", "psd.yaml");
   const SpeciesSpec& s = sc.species[0];
   EXPECT_TRUE(s.monodisperse());
   EXPECT_EQ(s.d_min(), 1e-4);
@@ -210,7 +224,8 @@ TEST(SizeDistribution, SingleSizeSpecies) {
 }
 
 TEST(SizeDistribution, SameSeedSameDiameters) {
-  const SpeciesSpec s = species_with("{law: lognormal, median: 1.0e-4, sigma_ln: 0.3, min: 5.0e-5, max: 2.5e-4}");
+  const SpeciesSpec s =
+      species_with("{law: lognormal, median: 1.0e-4, sigma_ln: 0.3, min: 5.0e-5, max: 2.5e-4}");
   EXPECT_EQ(draw(s.size, 1000, 3), draw(s.size, 1000, 3));
   EXPECT_NE(draw(s.size, 1000, 3), draw(s.size, 1000, 4));
 }

@@ -85,7 +85,9 @@ struct Rig {
     hist.load(s, list);
     s.x0 = s.x, s.y0 = s.y, s.z0 = s.z;
   }
-  void forces(double dt) { compute_contact_forces(s, list, law, hist, HaloImages{s.n_owned}, wall_z, dt); }
+  void forces(double dt) {
+    compute_contact_forces(s, list, law, hist, HaloImages{s.n_owned}, wall_z, dt);
+  }
   void start() {
     rebuild();
     forces(0.0);
@@ -164,8 +166,8 @@ TEST(TangentialFriction, SlidingSphereRollsAtFiveSeventhsAfterTwoSeventhsV0OverM
       EXPECT_NEAR(s.wy[0], mu * kMass * kG * h * rig.t / kInertia, 1e-6 * v0 / kR);
     }
   }
-  std::printf("stick at t = %.6g s (2 v0/(7 mu g) = %.6g s), rolling at v = %.8g v0 (5/7 = %.8g)\n", t_stick,
-              t_roll, rig.s.vx[0] / v0, 5.0 / 7.0);
+  std::printf("stick at t = %.6g s (2 v0/(7 mu g) = %.6g s), rolling at v = %.8g v0 (5/7 = %.8g)\n",
+              t_stick, t_roll, rig.s.vx[0] / v0, 5.0 / 7.0);
   EXPECT_LE(worst_ratio, 1.0 + 1e-12);
   EXPECT_GT(worst_ratio, 1.0 - 1e-12);  // it did slide at the limit
   EXPECT_NEAR(t_stick, t_roll, 1e-3 * t_roll);
@@ -206,8 +208,10 @@ TEST(TangentialFriction, StickingContactOscillatesAtTangentialFrequency) {
       ASSERT_LT(rig.t, 20 * period);
     }
     const double measured = (crossings.back() - crossings.front()) / 4.0;  // 8 half periods
-    std::printf("k_t/k_n = %.4f: period %.6g s, 2 pi sqrt(m_t/k_t) = %.6g s; xi max %.5g m, v1/omega_t = %.5g m\n",
-                ratio, measured, period, xi_max, v1 / omega_t);
+    std::printf(
+        "k_t/k_n = %.4f: period %.6g s, 2 pi sqrt(m_t/k_t) = %.6g s; xi max %.5g m, v1/omega_t = "
+        "%.5g m\n",
+        ratio, measured, period, xi_max, v1 / omega_t);
     // velocity Verlet: relative frequency error (omega dt)^2/24 = 4e-5
     EXPECT_NEAR(measured, period, 2e-4 * period);
     EXPECT_NEAR(xi_max, v1 / omega_t, 2e-3 * v1 / omega_t);
@@ -230,9 +234,9 @@ TEST(TangentialFriction, StickingContactOscillatesAtTangentialFrequency) {
 // The lever arms shrink by delta/2 during the contact, which detunes the two springs by
 // O(delta/R) = 2e-4 here: the tolerances.
 struct Impact {
-  double vt_after;      // tangential contact-point velocity after the impact
-  double dv_com;        // change of the tangential velocity of the first sphere's centre
-  double worst_ratio;   // max |F_t| / (mu |F_n|)
+  double vt_after;     // tangential contact-point velocity after the impact
+  double dv_com;       // change of the tangential velocity of the first sphere's centre
+  double worst_ratio;  // max |F_t| / (mu |F_n|)
   int sliding_steps, contact_steps;
 };
 
@@ -278,8 +282,10 @@ Impact oblique_impact(bool wall, double vn, double vt, double mu) {
   }
   const DemParticles& s = rig.s;
   // tangential velocity of the contact point, v_0 - v_1 - (c_0 w_0 + c_1 w_1) x n, n = z
-  if (wall) m.vt_after = s.vx[0] - s.z[0] * s.wy[0];
-  else m.vt_after = (s.vx[0] - s.vx[1]) - kR * (s.wy[0] + s.wy[1]);
+  if (wall)
+    m.vt_after = s.vx[0] - s.z[0] * s.wy[0];
+  else
+    m.vt_after = (s.vx[0] - s.vx[1]) - kR * (s.wy[0] + s.wy[1]);
   m.dv_com = s.vx[0] - (wall ? vt : 0.5 * vt);
   return m;
 }
@@ -293,17 +299,21 @@ TEST(TangentialFriction, ObliqueImpactSticksOrSlidesAsTheLinearSpringPredicts) {
     const double m12 = wall ? kMass : 0.5 * kMass;
     // sticking regime: v_t/v_n = 1
     const Impact stick = oblique_impact(wall, vn, 1.0 * vn, mu);
-    std::printf("%s, v_t/v_n = 1: v_t after / before = %.6f; %d of %d steps sliding\n", wall ? "wall" : "pair",
-                stick.vt_after / vn, stick.sliding_steps, stick.contact_steps);
+    std::printf("%s, v_t/v_n = 1: v_t after / before = %.6f; %d of %d steps sliding\n",
+                wall ? "wall" : "pair", stick.vt_after / vn, stick.sliding_steps,
+                stick.contact_steps);
     EXPECT_NEAR(stick.vt_after, -vn, 2e-3 * vn);
     EXPECT_LE(stick.worst_ratio, 1.0 + 1e-12);
-    EXPECT_LT(stick.sliding_steps, stick.contact_steps / 20);  // at most the last few steps (detuning)
+    EXPECT_LT(stick.sliding_steps,
+              stick.contact_steps / 20);  // at most the last few steps (detuning)
     // sliding regime: v_t/v_n = 5
     const double vt = 5.0 * vn;
     const Impact slide = oblique_impact(wall, vn, vt, mu);
-    std::printf("%s, v_t/v_n = 5: v_t after = %.6f v_n (v_t - 7 mu v_n = %.6f v_n); %d of %d steps sliding\n",
-                wall ? "wall" : "pair", slide.vt_after / vn, (vt - 7 * mu * vn) / vn, slide.sliding_steps,
-                slide.contact_steps);
+    std::printf(
+        "%s, v_t/v_n = 5: v_t after = %.6f v_n (v_t - 7 mu v_n = %.6f v_n); %d of %d steps "
+        "sliding\n",
+        wall ? "wall" : "pair", slide.vt_after / vn, (vt - 7 * mu * vn) / vn, slide.sliding_steps,
+        slide.contact_steps);
     EXPECT_EQ(slide.sliding_steps, slide.contact_steps);
     EXPECT_LE(slide.worst_ratio, 1.0 + 1e-12);
     // tangential impulse on sphere 0 = -mu x normal impulse (2 m12 v_n, undamped): the
@@ -397,8 +407,8 @@ TEST(ContactHistory, SurvivesReorderAndRebuildBitForBit) {
     std::vector<std::size_t> by_id(2);
     for (std::size_t i = 0; i < 2; ++i) by_id[rig.s.id[i]] = i;
     for (std::size_t i : by_id)
-      for (const auto* v : {&rig.s.x, &rig.s.y, &rig.s.z, &rig.s.vx, &rig.s.vy, &rig.s.vz, &rig.s.wx, &rig.s.wy,
-                            &rig.s.wz})
+      for (const auto* v : {&rig.s.x, &rig.s.y, &rig.s.z, &rig.s.vx, &rig.s.vy, &rig.s.vz,
+                            &rig.s.wx, &rig.s.wy, &rig.s.wz})
         out.push_back((*v)[i]);
     out.push_back(active);
     return out;
@@ -508,16 +518,19 @@ TEST(TangentialForces, ActionReactionIsExactAlsoAcrossPeriodicFaces) {
   cells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cut);
   ContactNeighbourList list;
   list.build(s, cells, skin);
-  for (std::size_t i = 0; i < s.n_owned; ++i) ASSERT_EQ(list.offset[i + 1] - list.offset[i], 1u) << i;
+  for (std::size_t i = 0; i < s.n_owned; ++i)
+    ASSERT_EQ(list.offset[i + 1] - list.offset[i], 1u) << i;
   std::size_t naive_mismatch = 0;  // what x_i - x_ghost would give
   for (std::size_t p = 0; p < n_pairs; ++p) {
-    const std::uint32_t gj = list.neighbour[list.offset[2 * p]], gi = list.neighbour[list.offset[2 * p + 1]];
+    const std::uint32_t gj = list.neighbour[list.offset[2 * p]],
+                        gi = list.neighbour[list.offset[2 * p + 1]];
     naive_mismatch += (s.x[2 * p] - s.x[gj]) != -(s.x[2 * p + 1] - s.x[gi]);
   }
   std::printf("pairs across the face: %zu of %zu; x_i - x_ghost not antisymmetric for %zu pairs\n",
               n_pairs / 2, n_pairs, naive_mismatch);
 
-  for (const ContactParams& p : {params(0.7, 0.3, 0.6), params(0.7, 0.3, 0.6, 0.2), params(0.7, 5.0, -1.0, 0.9)}) {
+  for (const ContactParams& p :
+       {params(0.7, 0.3, 0.6), params(0.7, 0.3, 0.6, 0.2), params(0.7, 5.0, -1.0, 0.9)}) {
     const ContactLaw law = make_contact_law(p);
     ContactHistory hist;
     hist.load(s, list);
@@ -555,7 +568,8 @@ TEST(TangentialForces, ActionReactionIsExactAlsoAcrossPeriodicFaces) {
       (ft < mu * std::abs(fn) * (1 - 1e-6) ? sticking : sliding) += 1;
     }
     std::printf("mu = %.1f%s: %zu pairs stick, %zu slide\n", p.tangential.friction,
-                p.rolling.model == RollingParams::Model::kEpsd ? " + rolling" : "", sticking, sliding);
+                p.rolling.model == RollingParams::Model::kEpsd ? " + rolling" : "", sticking,
+                sliding);
     EXPECT_GT(sticking, 0u);
     if (p.tangential.friction < 1) {
       EXPECT_GT(sliding, 0u);
@@ -597,8 +611,10 @@ TEST(TangentialForces, AngularMomentumOfAnObliqueCollisionIsConserved) {
       contact_steps += rig.s.cx[0] != 0.0 || rig.s.cy[0] != 0.0;
     }
     const auto L1 = rig.angular_momentum();
-    std::printf("|L| = %.4g (m v R = %.4g); max |L - L0| = %.3g; %d steps in contact; spin after %.4g %.4g rad/s\n",
-                std::hypot(L1[0], L1[1], L1[2]), scale, worst, contact_steps, rig.s.wz[0], rig.s.wz[1]);
+    std::printf(
+        "|L| = %.4g (m v R = %.4g); max |L - L0| = %.3g; %d steps in contact; spin after %.4g %.4g "
+        "rad/s\n",
+        std::hypot(L1[0], L1[1], L1[2]), scale, worst, contact_steps, rig.s.wz[0], rig.s.wz[1]);
     EXPECT_GT(contact_steps, 50);
     EXPECT_LT(worst, 1e-13 * scale);
     EXPECT_NE(rig.s.wz[0], -200.0);  // the contact changed the spins
@@ -633,7 +649,8 @@ TEST(RollingResistance, RollingSphereStopsWhereTheModelPredicts) {
       const DemParticles& s = rig.s;
       // (the contact point slips briefly at the start while the tangential spring loads,
       // and at the stop while the springs unload)
-      if (rig.t > 0.1 * t_stop && rig.t < 0.9 * t_stop) slip_max = std::max(slip_max, std::abs(s.vx[0] - s.z[0] * s.wy[0]));
+      if (rig.t > 0.1 * t_stop && rig.t < 0.9 * t_stop)
+        slip_max = std::max(slip_max, std::abs(s.vx[0] - s.z[0] * s.wy[0]));
       if (!checked_half && rig.t >= 0.5 * t_stop) {  // constant deceleration
         checked_half = true;
         EXPECT_NEAR(s.vx[0], 0.5 * v0, 2e-3 * v0);
@@ -643,10 +660,12 @@ TEST(RollingResistance, RollingSphereStopsWhereTheModelPredicts) {
         t_first_stop = rig.t;
       }
     }
-    std::printf("mu_r = %.2f: stops at x = %.6g m after %.5g s (v0^2/2a = %.6g m, 7 v0^2/(10 mu_r g) = %.6g m, "
-                "t = %.5g s); rests at %.6g m, |v| = %.2g m/s; max slip %.2g m/s\n",
-                mu_r, x_first_stop, t_first_stop, distance, distance_57, t_stop, rig.s.x[0], std::abs(rig.s.vx[0]),
-                slip_max);
+    std::printf(
+        "mu_r = %.2f: stops at x = %.6g m after %.5g s (v0^2/2a = %.6g m, 7 v0^2/(10 mu_r g) = "
+        "%.6g m, "
+        "t = %.5g s); rests at %.6g m, |v| = %.2g m/s; max slip %.2g m/s\n",
+        mu_r, x_first_stop, t_first_stop, distance, distance_57, t_stop, rig.s.x[0],
+        std::abs(rig.s.vx[0]), slip_max);
     EXPECT_NEAR(x_first_stop, distance, 1e-3 * distance);
     EXPECT_NEAR(x_first_stop, distance_57, 2e-3 * distance);
     EXPECT_NEAR(t_first_stop, t_stop, 2e-3 * t_stop);

@@ -21,25 +21,31 @@ namespace {
 
 struct BlockRun {
   double eps, reference, slip;
-  double smeared;    // the block's force balance with each sphere's own kernel voidage at release (see below)
-  double balanced;   // the same with each sphere's voidage and pressure force, means over the slip's window
-  double buoyancy;   // sum_i V_i (-grad P)_z,i / (sum_i V_i rho_av g), mean over the window (1: the mixture's)
-  double closed;     // the same balance with each sphere's own window-mean slip shape (see below)
+  double smeared;   // the block's force balance with each sphere's own kernel voidage at release
+                    // (see below)
+  double balanced;  // the same with each sphere's voidage and pressure force, means over the slip's
+                    // window
+  double buoyancy;  // sum_i V_i (-grad P)_z,i / (sum_i V_i rho_av g), mean over the window (1: the
+                    // mixture's)
+  double closed;    // the same balance with each sphere's own window-mean slip shape (see below)
   double slip_spread;  // standard deviation / mean of the spheres' window-mean superficial slips
 };
 
 // Per-sphere means over the slip's window (by sphere id: the spheres are re-sorted).
 struct SphereMeans {
-  std::vector<double> eps, pressure_z, d_sauter, slip_z;  // pressure_z: (-grad P + div tau)_z (N/m^3)
+  std::vector<double> eps, pressure_z, d_sauter,
+      slip_z;  // pressure_z: (-grad P + div tau)_z (N/m^3)
   double duration = 0;
   void add(const DemParticles& s, double dt) {
     for (std::size_t i = 0; i < s.n_owned; ++i) {
       const std::size_t k = static_cast<std::size_t>(s.id[i]);
-      if (k >= eps.size()) eps.resize(k + 1), pressure_z.resize(k + 1), d_sauter.resize(k + 1), slip_z.resize(k + 1);
+      if (k >= eps.size())
+        eps.resize(k + 1), pressure_z.resize(k + 1), d_sauter.resize(k + 1), slip_z.resize(k + 1);
       eps[k] += s.eps[i] * dt;
       pressure_z[k] += s.gz[i] * dt;
       d_sauter[k] += s.d_sauter[i] * dt;
-      slip_z[k] += s.eps[i] * (s.ufz[i] - s.vz[i]) * dt;  // superficial slip (2.74), upward for a falling block
+      slip_z[k] += s.eps[i] * (s.ufz[i] - s.vz[i]) *
+                   dt;  // superficial slip (2.74), upward for a falling block
     }
     duration += dt;
   }
@@ -64,9 +70,13 @@ double block_balance_slip(const Simulation& sim, const Scene& sc, double weight,
     for (std::size_t i = 0; i < s.n_owned; ++i) {
       const BalanceSphere b = sphere(i);
       const double us = b.shape * w;
-      drag_sum += std::visit([&](const auto& law) {
-        return drag::drag_coefficient(law, b.eps, us, 2.0 * s.radius[i], b.d_sauter, fl);
-      }, sc.drag) * us;
+      drag_sum +=
+          std::visit(
+              [&](const auto& law) {
+                return drag::drag_coefficient(law, b.eps, us, 2.0 * s.radius[i], b.d_sauter, fl);
+              },
+              sc.drag) *
+          us;
     }
     return drag_sum - weight;
   };
@@ -83,10 +93,12 @@ double balanced_block_slip(const Simulation& sim, const Scene& sc, const SphereM
   const double g = std::abs(sc.gravity[2]), inv_t = 1.0 / m.duration;
   double weight = 0;
   for (std::size_t i = 0; i < s.n_owned; ++i)
-    weight += s.volume(i) * (sc.species[s.species[i]].density * g - m.pressure_z[static_cast<std::size_t>(s.id[i])] * inv_t);
+    weight += s.volume(i) * (sc.species[s.species[i]].density * g -
+                             m.pressure_z[static_cast<std::size_t>(s.id[i])] * inv_t);
   return block_balance_slip(sim, sc, weight, [&](std::size_t i) {
     const std::size_t k = static_cast<std::size_t>(s.id[i]);
-    return BalanceSphere{m.eps[k] * inv_t, (same_interstitial_slip ? m.eps[k] : m.slip_z[k]) * inv_t,
+    return BalanceSphere{m.eps[k] * inv_t,
+                         (same_interstitial_slip ? m.eps[k] : m.slip_z[k]) * inv_t,
                          m.d_sauter[k] * inv_t};
   });
 }
@@ -103,8 +115,9 @@ double smeared_block_slip(const Simulation& sim, const Scene& sc, double eps) {
   double weight = 0;
   for (std::size_t i = 0; i < s.n_owned; ++i)
     weight += eps * (sc.species[s.species[i]].density - sc.fluid.density) * s.volume(i) * g;
-  return block_balance_slip(sim, sc, weight,
-                            [&](std::size_t i) { return BalanceSphere{s.eps[i], s.eps[i], s.d_sauter[i]}; });
+  return block_balance_slip(sim, sc, weight, [&](std::size_t i) {
+    return BalanceSphere{s.eps[i], s.eps[i], s.d_sauter[i]};
+  });
 }
 
 // Mean superficial slip of the whole block (both sizes, by sphere count) over the last
@@ -120,9 +133,9 @@ BlockRun run_block(const std::string& file, const std::vector<std::string>& over
   const SpeciesSpec& small = sc.species.at(1);
   BlockRun r;
   r.eps = block_lattice(sc, sc.particles.at(0)).voidage;
-  r.reference = theory::bidisperse_block_slip(big.diameter, small.diameter, sc.particles.at(0).fractions.at(0),
-                                              big.density, sc.fluid.density, sc.fluid.viscosity,
-                                              std::abs(sc.gravity[2]), r.eps);
+  r.reference = theory::bidisperse_block_slip(
+      big.diameter, small.diameter, sc.particles.at(0).fractions.at(0), big.density,
+      sc.fluid.density, sc.fluid.viscosity, std::abs(sc.gravity[2]), r.eps);
   Simulation sim(sc);
   const DemParticles& s = sim.spheres();
   double n_big = 0;
@@ -158,24 +171,36 @@ BlockRun run_block(const std::string& file, const std::vector<std::string>& over
       volume += s.volume(i);
     }
     r.slip_spread = std::sqrt(std::max(0.0, m2 - m1 * m1)) / m1;
-    const double rho_av = r.eps * sc.fluid.density + (1.0 - r.eps) * big.density;  // both species share rho_p
+    const double rho_av =
+        r.eps * sc.fluid.density + (1.0 - r.eps) * big.density;  // both species share rho_p
     r.buoyancy = pressure / (volume * rho_av * std::abs(sc.gravity[2]));
   }
-  std::printf("%s %s: eps = %.4f, (4.5) %.5g m/s, simulated %.5g m/s: error %+.2f %%; with the kernel-smeared "
-              "faces %.5g m/s (%+.2f %% from 4.5), simulated %+.2f %% from it\n", file.c_str(),
-              overrides.empty() ? "classic, h/d_big = 2" : "double smoothing, h/d_small = 2", r.eps, r.reference,
-              r.slip, 100 * (r.slip / r.reference - 1), r.smeared, 100 * (r.smeared / r.reference - 1),
-              100 * (r.slip / r.smeared - 1));
-  std::printf("  over the window: pressure force on the spheres %.4f of rho_av g V; the force balance with each "
-              "sphere's window-mean voidage and pressure force %.5g m/s (%+.2f %% from 4.5), simulated %+.2f %% "
-              "from it\n", r.buoyancy, r.balanced, 100 * (r.balanced / r.reference - 1), 100 * (r.slip / r.balanced - 1));
-  std::printf("  with each sphere's own window-mean slip (spread %.2f %% of the mean): %.5g m/s (%+.2f %% from 4.5), "
-              "simulated %+.2f %% from it\n", 100 * r.slip_spread, r.closed, 100 * (r.closed / r.reference - 1),
-              100 * (r.slip / r.closed - 1));
+  std::printf(
+      "%s %s: eps = %.4f, (4.5) %.5g m/s, simulated %.5g m/s: error %+.2f %%; with the "
+      "kernel-smeared "
+      "faces %.5g m/s (%+.2f %% from 4.5), simulated %+.2f %% from it\n",
+      file.c_str(), overrides.empty() ? "classic, h/d_big = 2" : "double smoothing, h/d_small = 2",
+      r.eps, r.reference, r.slip, 100 * (r.slip / r.reference - 1), r.smeared,
+      100 * (r.smeared / r.reference - 1), 100 * (r.slip / r.smeared - 1));
+  std::printf(
+      "  over the window: pressure force on the spheres %.4f of rho_av g V; the force balance with "
+      "each "
+      "sphere's window-mean voidage and pressure force %.5g m/s (%+.2f %% from 4.5), simulated "
+      "%+.2f %% "
+      "from it\n",
+      r.buoyancy, r.balanced, 100 * (r.balanced / r.reference - 1),
+      100 * (r.slip / r.balanced - 1));
+  std::printf(
+      "  with each sphere's own window-mean slip (spread %.2f %% of the mean): %.5g m/s (%+.2f %% "
+      "from 4.5), "
+      "simulated %+.2f %% from it\n",
+      100 * r.slip_spread, r.closed, 100 * (r.closed / r.reference - 1),
+      100 * (r.slip / r.closed - 1));
   return r;
 }
 
-const std::vector<std::string> kDouble = {"fluid.spacing=2.0e-4", "coupling.voidage_smoothing=double"};
+const std::vector<std::string> kDouble = {"fluid.spacing=2.0e-4",
+                                          "coupling.voidage_smoothing=double"};
 
 }  // namespace
 
@@ -196,7 +221,8 @@ TEST(BidisperseBlock, ReferenceReducesToMonodisperse) {
 // Beetstra drag at h/d = 2 (+6.1 %; with Di Felice +3.4 %). All of it is the kernel at the
 // block's faces, which the face spheres see three ways; the block's force balance with
 // what each sphere sees accounts for it step by step (seed-free lattice, 1 thread):
-//                                     150/100 double  200/100 double  150/100 classic  200/100 classic
+//                                     150/100 double  200/100 double  150/100 classic  200/100
+//                                     classic
 //   simulated                             +7.26 %         +7.44 %         +9.26 %          +12.56 %
 //   voidage at release (smeared)          +5.77 %         +5.44 %         +7.62 %          +10.46 %
 //   + window means of voidage and

@@ -29,11 +29,12 @@ TEST(SingleSphere, FollowsStokesTransientAndTerminalSpeed) {
   }
   const Diagnostics d = diagnostics(sim);
   const double v_end = -d.vz_mean[0], slip_end = d.slip_z_mean[0];
-  std::printf("t_d = %.4g s, v_T = %.5g m/s; at t = %.4g s (%.1f t_d): v = %.5g m/s (%+.2f %%), "
-              "slip = %.5g m/s (%+.2f %%); max transient error (t <= 3 t_d) %.2f %% of v_T\n",
-              stokes.t_relax, stokes.v_terminal, d.time, d.time / stokes.t_relax, v_end,
-              100 * (v_end / stokes.v_terminal - 1), slip_end, 100 * (slip_end / stokes.v_terminal - 1),
-              100 * max_transient_err);
+  std::printf(
+      "t_d = %.4g s, v_T = %.5g m/s; at t = %.4g s (%.1f t_d): v = %.5g m/s (%+.2f %%), "
+      "slip = %.5g m/s (%+.2f %%); max transient error (t <= 3 t_d) %.2f %% of v_T\n",
+      stokes.t_relax, stokes.v_terminal, d.time, d.time / stokes.t_relax, v_end,
+      100 * (v_end / stokes.v_terminal - 1), slip_end, 100 * (slip_end / stokes.v_terminal - 1),
+      100 * max_transient_err);
   // Transient: the drag is re-evaluated every DEM sub-step, so (4.1) is followed to
   // within the fluid the sphere drags along (grows to ~1 % by 3 t_d).
   EXPECT_LT(max_transient_err, 0.01);
