@@ -54,16 +54,14 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
 #ifdef SPHDEM_HAVE_CATALYST
   std::unique_ptr<sphdem::InSitu> insitu;
   std::unique_ptr<sphdem::VtkSnapshots> snapshots;
-  const sphdem::GridSpec grid = sphdem::column_voidage_grid(
-      scene.box.length(0), scene.box.length(1), scene.fill_height(), scene.insitu.grid_spacing,
-      scene.fluid.smoothing_factor * scene.fluid.spacing);
+  const sphdem::GridSpec grid =
+      sphdem::column_voidage_grid(scene.box.length(0), scene.box.length(1), scene.fill_height(),
+                                  scene.insitu.grid_spacing, scene.fluid.lattice_h());
   std::vector<double> voidage;
   if (scene.insitu.enabled && !no_insitu && !scene.insitu.pipelines.empty()) {
     sphdem::InSituOptions io;
     io.out_dir = out_dir;
     io.pipelines_dir = SPHDEM_PIPELINES_DIR;
-    io.pipelines = scene.insitu.pipelines;
-    io.snapshot_every = scene.insitu.snapshot_every;
     io.resume_time = resume_time;
     io.resume_step = resume ? static_cast<long>(resume->scalar<std::int64_t>("run/step")) : -1;
     std::filesystem::create_directories(out_dir);
@@ -71,7 +69,7 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
     sphdem::install_stop_signals();  // ParaView's logger installed its own for SIGINT, SIGTERM
     opt.hooks.push_back(
         {"in-situ analysis", scene.insitu.every, [&](const sphdem::Simulation& sim, long call) {
-           voidage = voidage_on_grid(sim, grid, scene.fluid.smoothing_factor * scene.fluid.spacing);
+           voidage = voidage_on_grid(sim, grid, scene.fluid.lattice_h());
            const std::vector<int> contacts = contact_counts(sim.spheres(), sim.contact_list());
            sphdem::InSituFrame fr;
            fr.fluid = &sim.fluid();

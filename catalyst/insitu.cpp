@@ -55,7 +55,7 @@ struct InSitu::Impl {
     num("box", {scene.box.lo[0], scene.box.hi[0], scene.box.lo[1], scene.box.hi[1], scene.box.lo[2],
                 scene.box.hi[2]});
     num("reference_velocity", {scene.insitu.reference_velocity});
-    num("snapshot_every", {static_cast<double>(opt.snapshot_every)});
+    num("snapshot_every", {static_cast<double>(scene.insitu.snapshot_every)});
     vtkNew<vtkStringArray> dir;
     dir->SetName("insitu_dir");
     dir->InsertNextValue(insitu_dir);
@@ -91,7 +91,7 @@ InSitu::InSitu(const Scene& scene, const InSituOptions& opt) : impl_(std::make_u
   const int rank = m.controller->GetLocalProcessId();
 
   bool wants_render = false;
-  for (const auto& p : opt.pipelines) wants_render |= p == "snapshots";
+  for (const auto& p : scene.insitu.pipelines) wants_render |= p == "snapshots";
   if (wants_render && opt.want_images) {
     m.display = std::make_unique<HeadlessDisplay>();
     m.render = m.display->available();
@@ -107,7 +107,7 @@ InSitu::InSitu(const Scene& scene, const InSituOptions& opt) : impl_(std::make_u
 
   m.processor = vtkSmartPointer<vtkCPProcessor>::New();
   m.processor->Initialize();
-  for (const auto& name : opt.pipelines) {
+  for (const auto& name : scene.insitu.pipelines) {
     if (name == "snapshots" && !m.render) continue;
     const std::string path = (std::filesystem::path(opt.pipelines_dir) / (name + ".py")).string();
     auto pipe = vtkSmartPointer<vtkCPPythonScriptV2Pipeline>::New();

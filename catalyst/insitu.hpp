@@ -24,11 +24,10 @@
 namespace sphdem {
 
 struct InSituOptions {
-  std::string out_dir = "out";         // reduced data go to out_dir/insitu
-  std::string pipelines_dir;           // where pipelines/<name>.py live
-  std::vector<std::string> pipelines;  // names (scene insitu.pipelines)
-  int snapshot_every = 5;
-  bool want_images = true;  // render PNGs (needs X; Xvfb is started if DISPLAY is unset)
+  std::string out_dir = "out";  // reduced data go to out_dir/insitu
+  std::string pipelines_dir;    // where pipelines/<name>.py live (the scene's
+                                // insitu.pipelines and insitu.snapshot_every say which, how often)
+  bool want_images = true;      // render PNGs (needs X; Xvfb is started if DISPLAY is unset)
   // A resumed run: the time of its checkpoint. The pipelines keep their rows up to it,
   // drop later ones and take their state back (pipelines/README.md). NaN: a new run.
   double resume_time = std::numeric_limits<double>::quiet_NaN();

@@ -91,8 +91,8 @@ def catalyst_execute(info):
     if si.resumed() and "resumed" not in state:
         state["resumed"] = True
         drop_later_snapshots(out)
-    # every SNAPSHOT_EVERY-th analysis of the run (counted over resumes by the solver)
-    if int(si.field(data, "analysis")[0]) % si.SNAPSHOT_EVERY:
+    # every insitu.snapshot_every-th analysis of the run (counted over resumes by the solver)
+    if int(si.field(data, "analysis")[0]) % int(si.field(data, "snapshot_every")[0]):
         return
     view.ViewTime = info.time  # the producers' time: VTK warns when the view asks for an older one
     clock.Text = "t = %.3f s" % info.time

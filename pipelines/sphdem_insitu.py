@@ -20,10 +20,9 @@ except Exception:  # no mpi4py: a single rank
 
 RANK = COMM.Get_rank() if COMM is not None else 0
 # The run's options travel with every frame as field data (catalyst/insitu.cpp), read by
-# the first frame a pipeline looks at (local_data): DIR/insitu and the analyses between
-# snapshots.
+# the first frame a pipeline looks at (local_data): DIR/insitu (the analyses between
+# snapshots, the scene's insitu.snapshot_every, are read by snapshots.py from each frame).
 OUT = "."
-SNAPSHOT_EVERY = 5
 # A resumed run (sphdem resume): the time and step of its checkpoint. Each pipeline keeps
 # its rows up to that time, drops later ones (written before the run stopped) and takes
 # back its state (load_state) at its first analysis after the resume. NaN: a new run.
@@ -32,14 +31,11 @@ RESUME_STEP = -1
 
 
 def _configure(data):
-    global OUT, SNAPSHOT_EVERY, RESUME_TIME, RESUME_STEP
+    global OUT, RESUME_TIME, RESUME_STEP
     fd = data.VTKObject.GetFieldData()
     out = fd.GetAbstractArray("insitu_dir")
     if out is not None and out.GetNumberOfValues():
         OUT = out.GetValue(0)
-    every = fd.GetArray("snapshot_every")
-    if every is not None and every.GetNumberOfTuples():
-        SNAPSHOT_EVERY = max(1, int(every.GetValue(0)))
     resume = fd.GetArray("resume_time")
     if resume is not None and resume.GetNumberOfTuples():
         RESUME_TIME = float(resume.GetValue(0))

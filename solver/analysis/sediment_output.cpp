@@ -25,7 +25,7 @@ void write_sediment_output(const Simulation& sim, const std::string& out_dir) {
   // The voidage grid needs the sphere halo at the fluid's kernel reach: without fluid
   // (dry DEM) the halo only spans the contacts, and there is no voidage field to report.
   if (one_density && sc.fluid.enabled) {
-    const double h = sc.fluid.smoothing_factor * sc.fluid.spacing;
+    const double h = sc.fluid.lattice_h();
     const GridSpec grid = column_voidage_grid(sc.box.length(0), sc.box.length(1), sc.box.length(2),
                                               sc.fluid.spacing, h);
     write_bulk_density_csv(

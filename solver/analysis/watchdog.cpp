@@ -129,7 +129,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
   // The free surface sits at the box's top in a full column: a surface particle may bob a
   // kernel support 2h above it (the cell list keeps it in the top cell, its neighbours all
   // below); one past that has no neighbour left and has left the fluid.
-  const double fluid_top_z = top_z + 2.0 * sc.fluid.smoothing_factor * sc.fluid.spacing;
+  const double fluid_top_z = top_z + kernel::kSupport * sc.fluid.lattice_h();
   for (long a = 0; a < nf; ++a) {
     if (!std::isfinite(f.x[a] + f.y[a] + f.z[a] + f.vx[a] + f.vy[a] + f.vz[a] + f.rho[a])) {
       bad_fluid = std::min(bad_fluid, a);

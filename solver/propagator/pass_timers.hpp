@@ -5,22 +5,26 @@
 
 namespace sphdem {
 
+// The one table of the passes: PASS(enumerator, name as printed). Adding a pass is a row
+// here and a lap() where it ends (Simulation::advance).
+#define SPHDEM_PASSES(PASS)           \
+  PASS(kIntegrate, "integrate_fluid") \
+  PASS(kDem, "dem_substeps")          \
+  PASS(kNeighbours, "neighbours")     \
+  PASS(kVoidage, "voidage")           \
+  PASS(kDensity, "density_rate")      \
+  PASS(kMomentum, "momentum")         \
+  PASS(kInterp, "interpolation")      \
+  PASS(kReaction, "reaction")         \
+  PASS(kOther, "other")
+
 struct PassTimers {
-  enum Pass {
-    kIntegrate,
-    kDem,
-    kNeighbours,
-    kVoidage,
-    kDensity,
-    kMomentum,
-    kInterp,
-    kReaction,
-    kOther
-  };
-  static constexpr int kCount = 9;
-  static constexpr const char* kNames[kCount] = {"integrate_fluid", "dem_substeps", "neighbours",
-                                                 "voidage",         "density_rate", "momentum",
-                                                 "interpolation",   "reaction",     "other"};
+#define SPHDEM_PASS_ENUMERATOR(e, name) e,
+  enum Pass { SPHDEM_PASSES(SPHDEM_PASS_ENUMERATOR) kCount };
+#undef SPHDEM_PASS_ENUMERATOR
+#define SPHDEM_PASS_NAME(e, name) name,
+  static constexpr const char* kNames[kCount] = {SPHDEM_PASSES(SPHDEM_PASS_NAME)};
+#undef SPHDEM_PASS_NAME
   std::array<double, kCount> seconds{};
 };
 

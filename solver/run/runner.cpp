@@ -229,7 +229,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     const fs::path dir = fs::path(opt.out_dir) / "watchdog";
     fs::create_directories(dir);
     const std::string dump = (dir / fmt::format("step_{:012d}.vtp", s.step_count())).string();
-    const double h = scene.fluid.smoothing_factor * scene.fluid.spacing;
+    const double h = scene.fluid.lattice_h();
     double d_max = 0.0;
     for (const auto& sp : scene.species) d_max = std::max(d_max, sp.d_max());
     const double radius = std::max(3.0 * kernel::kSupport * h, 5.0 * d_max);
@@ -379,7 +379,7 @@ double fluid_lattice_count(const Scene& sc) {
                           : 0.0;
 }
 double acoustic_step(const Scene& sc) {
-  return sc.time.cfl * sc.fluid.smoothing_factor * sc.fluid.spacing / sc.fluid.sound_speed;
+  return sc.time.cfl * sc.fluid.lattice_h() / sc.fluid.sound_speed;
 }
 
 std::string describe_presets(const Scene& sc, const std::vector<Scene>& presets, double wall) {
@@ -414,7 +414,7 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
   s += fmt::format(
       "SPH particles    {} fluid + {} wall ({} layers), spacing dx = {} m, h = {:.4g} m\n",
       sim.fluid_count(), sim.wall_count(), sc.fluid.wall_layers, sc.fluid.spacing,
-      sc.fluid.smoothing_factor * sc.fluid.spacing);
+      sc.fluid.lattice_h());
   const auto& sp = sim.spheres();
   std::vector<std::size_t> count(sc.species.size(), 0);
   for (std::size_t j = 0; j < sp.n_owned; ++j) ++count[sp.species[j]];

@@ -27,7 +27,7 @@ double extra_drag_ratio(const Scene& sc) {
   const double g = sc.gravity_magnitude();
   const FluidSpec& f = sc.fluid;
   if (!f.enabled || g <= 0.0) return 0.0;
-  const double h = f.smoothing_factor * f.spacing, h4 = h * h * h * h;
+  const double h = f.lattice_h(), h4 = h * h * h * h;
   double ratio = 0.0;
   for (const SpeciesSpec& s : sc.species) {
     const double d = s.d_max(), weight_density = std::abs(s.density - f.density);

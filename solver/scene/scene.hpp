@@ -14,6 +14,7 @@
 #include "dem/tangential_model.hpp"
 #include "domain/box.hpp"
 #include "scene/size_distribution.hpp"
+#include "sph/kernel.hpp"
 
 namespace sphdem {
 
@@ -33,7 +34,16 @@ struct FluidSpec {
   int gamma = 7;
   int wall_layers = 3;
   bool enabled = true;  // false: spheres only (dry DEM), no SPH particles
+
+  // h of the initial lattice: sigma dx (2.65 with m/rho = dx^3, the hydrostatic start)
+  double lattice_h() const { return smoothing_factor * spacing; }
 };
+
+// What a periodic width must hold for a kernel of smoothing length h: its support 2h and
+// a fifth more for the growth of h and the Verlet skin (the loader's checks of the box).
+inline double kernel_reach_with_margin(double h) {
+  return 1.2 * kernel::kSupport * h;
+}
 
 struct SpeciesSpec {
   std::string name;

@@ -35,8 +35,7 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
     const bool big = ds.enabled && std::find(ds.big_species.begin(), ds.big_species.end(),
                                              sp.name) != ds.big_species.end();
     const double d = sp.d_max();
-    const double h = std::hypot(sc.drag_kernel_scale * fl.smoothing_factor * fl.spacing,
-                                big ? ds.h_over_d * d : 0.0);
+    const double h = std::hypot(sc.drag_kernel_scale * fl.lattice_h(), big ? ds.h_over_d * d : 0.0);
     const double self = sphere_kernel_share(d, h);
     if (fl.enabled && self > kSelfVoidageLimit)
       out.push_back(

@@ -272,7 +272,7 @@ void resolve_sphere_kernel(Scene& sc, bool kernel_auto, bool drag_kernel_given,
   if (sc.drag_kernel_scale > sc.sphere_kernel_scale)
     fail("drag_kernel_scale", fmt::format("must be in [1, sphere_kernel_scale = {}] (got {})",
                                           sc.sphere_kernel_scale, sc.drag_kernel_scale));
-  const double reach = 2.4 * sc.sphere_kernel_scale * sc.fluid.smoothing_factor * sc.fluid.spacing;
+  const double reach = kernel_reach_with_margin(sc.sphere_kernel_scale * sc.fluid.lattice_h());
   for (int d = 0; d < 2 && sc.fluid.enabled; ++d)
     if (sc.box.length(d) < reach) {
       fail("sphere_kernel_scale",
@@ -294,10 +294,10 @@ void resolve_resolution(Scene& sc, bool given, SceneProblems& problems) {
   f.resolution = 1.0;
   if (!f.enabled) return;
   const double dx = sc.box.length(0) / std::max(1.0, std::round(sc.box.length(0) * res / old_dx));
-  const double ny = sc.box.length(1) / dx, support = 4.8 * f.smoothing_factor * dx;
+  const double h = f.smoothing_factor * dx;
+  const double ny = sc.box.length(1) / dx, support = 2.0 * kernel_reach_with_margin(h);
   double d_max = 0.0;
   for (const SpeciesSpec& s : sc.species) d_max = std::max(d_max, s.d_max());
-  const double h = f.smoothing_factor * dx;
   std::string why;
   if (std::abs(ny - std::round(ny)) > 1e-6)
     why = fmt::format("{} m does not divide the width {} m", dx, sc.box.length(1));
@@ -382,7 +382,7 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
     const bool fill_ok = r.clean();
     r.finish();
     for (int d = 0; d < 2 && f.enabled && box_ok && lattice_ok; ++d) {  // no fluid: nothing to fit
-      const double halo = 2.4 * f.smoothing_factor * f.spacing;
+      const double halo = kernel_reach_with_margin(f.lattice_h());
       if (sc.box.length(d) < 2.0 * halo) {
         r.fail("domain.size", fmt::format("the periodic width {} m must be >= 4.8 smoothing_factor "
                                           "spacing = {} m (twice the kernel support with margin)",

@@ -315,7 +315,7 @@ TEST_P(Extremes, StableAndPhysicalOrRefused) {
                                                   sc.species.at(0).density, sc.fluid.density,
                                                   sc.fluid.viscosity, sc.gravity_magnitude(), eps0)
                    : 0.0;
-  const double support = 2 * sc.fluid.smoothing_factor * sc.fluid.spacing;
+  const double support = kernel::kSupport * sc.fluid.lattice_h();
   double bulk_fall_sum = 0, bulk_slip_sum = 0;
   long bulk_count = 0;
   const double log_every = end / 50;

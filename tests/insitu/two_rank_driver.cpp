@@ -102,7 +102,7 @@ DemParticles make_spheres() {
 
 // Fluid lattice at the scene spacing, cell-centred, filling the box.
 FluidParticles make_fluid(const Scene& sc) {
-  const double dx = sc.fluid.spacing, h = sc.fluid.smoothing_factor * dx;
+  const double dx = sc.fluid.spacing, h = sc.fluid.lattice_h();
   const int nx = static_cast<int>(std::lround(kLx / dx)),
             ny = static_cast<int>(std::lround(kLy / dx)),
             nz = static_cast<int>(std::lround(kLz / dx));
@@ -195,7 +195,7 @@ int run(int argc, char** argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &nranks);
 
   const Scene scene = load_scene_text(kSceneYaml, "two_rank_driver");
-  const double h = scene.fluid.smoothing_factor * scene.fluid.spacing;
+  const double h = scene.fluid.lattice_h();
   const GridSpec whole = column_voidage_grid(scene.box.length(0), scene.box.length(1),
                                              scene.fill_height(), scene.insitu.grid_spacing, h);
 
@@ -212,7 +212,6 @@ int run(int argc, char** argv) {
   InSituOptions io;
   io.out_dir = argv[1];
   io.pipelines_dir = argv[2];
-  io.pipelines = scene.insitu.pipelines;
   io.want_images = false;
   std::vector<std::vector<double>> known;
   std::size_t owned_spheres = 0;

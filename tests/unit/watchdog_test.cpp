@@ -118,7 +118,7 @@ TEST(Watchdog, ASurfaceParticleMayBobAKernelSupportAboveTheTop) {
   Simulation sim(sc);
   sim.relax();
   const double top = sim.params().box.hi[2];
-  const double support = 2.0 * sc.fluid.smoothing_factor * sc.fluid.spacing;
+  const double support = kernel::kSupport * sc.fluid.lattice_h();
   FluidParticles& f = sim.fluid();
   std::size_t a = 0;
   for (std::size_t b = 0; b < f.n_owned; ++b)

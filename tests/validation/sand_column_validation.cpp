@@ -139,7 +139,7 @@ class SandColumn : public ::testing::Test {
     // bed with the clear water above and the empty wall below).
     r.rho_bed_solid =
         sc.fluid.density + (sand.density - sc.fluid.density) * solid / (area * r.z_top);
-    const double h = sc.fluid.smoothing_factor * sc.fluid.spacing;
+    const double h = sc.fluid.lattice_h();
     const GridSpec grid = column_voidage_grid(sc.box.length(0), sc.box.length(1), sc.box.length(2),
                                               sc.fluid.spacing, h);
     const BulkDensityProfile prof = bulk_density_profile(voidage_on_grid(sim, grid, h), grid,
