@@ -2,11 +2,10 @@
 // Drag laws: force on a sphere of diameter d from the superficial slip velocity
 // u_s = eps (u_f - v) (eq. 2.74), Re_p = rho_f |u_s| d / mu. Each law is a small
 // struct with an inline evaluator; a pass is templated on the law and the runtime
-// choice (DragLaw) is resolved once per pass, never per particle.
+// choice (DragLaw, coupling/drag_law_table.hpp) is resolved once per pass, never per
+// particle.
 #include <algorithm>
 #include <cmath>
-#include <string>
-#include <variant>
 
 namespace sphdem::drag {
 
@@ -124,13 +123,6 @@ struct NoDrag {
   }
 };
 
-using DragLaw = std::variant<Stokes, DiFeliceDallavalle, CoulsonRichardson, BrownLawler,
-                             BeetstraPolydisperse, NoDrag>;
-
-// The one registry of drag-law names used by scene files.
-inline const char* const kDragLawNames[] = {"stokes",       "di_felice", "coulson_richardson",
-                                            "brown_lawler", "beetstra",  "none"};
-
 // Drag coefficient of sphere of diameter d where the local Sauter mean is d_sauter: the
 // polydisperse law uses it, the single-sphere laws do not.
 template <class Law>
@@ -142,25 +134,4 @@ inline double drag_coefficient(const BeetstraPolydisperse& law, double eps, doub
                                double d_sauter, const Fluid& fl) {
   return law.coefficient(eps, us, d, d_sauter > 0.0 ? d_sauter : d, fl);
 }
-inline bool drag_law_from_name(const std::string& name, DragLaw& out) {
-  if (name == "stokes")
-    out = Stokes{};
-  else if (name == "di_felice")
-    out = DiFeliceDallavalle{};
-  else if (name == "coulson_richardson")
-    out = CoulsonRichardson{};
-  else if (name == "brown_lawler")
-    out = BrownLawler{};
-  else if (name == "beetstra")
-    out = BeetstraPolydisperse{};
-  else if (name == "none")
-    out = NoDrag{};
-  else
-    return false;
-  return true;
-}
-inline std::string drag_law_name(const DragLaw& law) {
-  return kDragLawNames[law.index()];
-}
-
 }  // namespace sphdem::drag

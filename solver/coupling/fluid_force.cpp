@@ -149,40 +149,34 @@ SPHDEM_TARGET_AVX512 double forces_avx512(const Law& law, const SphereFields& s,
 
 }  // namespace
 
-template <class Law>
-void drag_coefficients(const Law& law, const DemParticles& s, const drag::Fluid& fluid,
+void drag_coefficients(const drag::DragLaw& law, const DemParticles& s, const drag::Fluid& fluid,
                        std::size_t begin, std::size_t end, double* c, PairIsa isa) {
   const SphereFields fields(s);
-  if (isa == PairIsa::kAvx512)
-    coefficients_avx512(law, fields, fluid, begin, end, c);
-  else
-    coefficients_scalar(law, fields, fluid, begin, end, c);
+  std::visit(
+      [&](const auto& l) {
+        if (isa == PairIsa::kAvx512)
+          coefficients_avx512(l, fields, fluid, begin, end, c);
+        else
+          coefficients_scalar(l, fields, fluid, begin, end, c);
+      },
+      law);
 }
 
-template <class Law>
-double fluid_forces(const Law& law, DemParticles& s, const drag::Fluid& fluid, std::size_t begin,
-                    std::size_t end, const FluidForceWindow& window, double* c, PairIsa isa) {
+double fluid_forces(const drag::DragLaw& law, DemParticles& s, const drag::Fluid& fluid,
+                    std::size_t begin, std::size_t end, const FluidForceWindow& window, double* c,
+                    PairIsa isa) {
   const SphereFields fields(s);
-  if (isa == PairIsa::kAvx512)
-    return window.accumulate_mean ? forces_avx512<true>(law, fields, fluid, window, begin, end, c)
-                                  : forces_avx512<false>(law, fields, fluid, window, begin, end, c);
-  return window.accumulate_mean ? forces_scalar<true>(law, fields, fluid, window, begin, end, c)
-                                : forces_scalar<false>(law, fields, fluid, window, begin, end, c);
+  return std::visit(
+      [&](const auto& l) {
+        if (isa == PairIsa::kAvx512)
+          return window.accumulate_mean
+                     ? forces_avx512<true>(l, fields, fluid, window, begin, end, c)
+                     : forces_avx512<false>(l, fields, fluid, window, begin, end, c);
+        return window.accumulate_mean
+                   ? forces_scalar<true>(l, fields, fluid, window, begin, end, c)
+                   : forces_scalar<false>(l, fields, fluid, window, begin, end, c);
+      },
+      law);
 }
-
-#define SPHDEM_FLUID_FORCE(Law)                                                                \
-  template void drag_coefficients<drag::Law>(const drag::Law&, const DemParticles&,            \
-                                             const drag::Fluid&, std::size_t, std::size_t,     \
-                                             double*, PairIsa);                                \
-  template double fluid_forces<drag::Law>(const drag::Law&, DemParticles&, const drag::Fluid&, \
-                                          std::size_t, std::size_t, const FluidForceWindow&,   \
-                                          double*, PairIsa);
-SPHDEM_FLUID_FORCE(Stokes)
-SPHDEM_FLUID_FORCE(DiFeliceDallavalle)
-SPHDEM_FLUID_FORCE(CoulsonRichardson)
-SPHDEM_FLUID_FORCE(BrownLawler)
-SPHDEM_FLUID_FORCE(BeetstraPolydisperse)
-SPHDEM_FLUID_FORCE(NoDrag)
-#undef SPHDEM_FLUID_FORCE
 
 }  // namespace sphdem

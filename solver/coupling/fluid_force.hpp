@@ -9,15 +9,15 @@
 // log10 and pow (glibc's libmvec, within 4 ulp of libm); elsewhere they are scalar loops.
 #include <cstddef>
 
-#include "coupling/drag_laws.hpp"
+#include "coupling/drag_law_table.hpp"
 #include "dem/dem_particles.hpp"
 #include "sph/pair_isa.hpp"
 
 namespace sphdem {
 
-// The drag coefficients c_j of spheres [begin, end) at their current velocities.
-template <class Law>
-void drag_coefficients(const Law& law, const DemParticles& s, const drag::Fluid& fluid,
+// The drag coefficients c_j of spheres [begin, end) at their current velocities. (Each
+// entry point visits the law once and runs the loop of that law's evaluator.)
+void drag_coefficients(const drag::DragLaw& law, const DemParticles& s, const drag::Fluid& fluid,
                        std::size_t begin, std::size_t end, double* c, PairIsa isa);
 
 // What a DEM sub-step does with the new fluid force besides keeping it in (fx, fy, fz):
@@ -32,8 +32,8 @@ struct FluidForceWindow {
 // The fluid force on spheres [begin, end) into (fx, fy, fz) after its share of the window
 // went to fm, their drag coefficients into c; returns the largest drag relaxation rate
 // c_j eps_j / m_j among them (d f / d v = -c eps).
-template <class Law>
-double fluid_forces(const Law& law, DemParticles& s, const drag::Fluid& fluid, std::size_t begin,
-                    std::size_t end, const FluidForceWindow& window, double* c, PairIsa isa);
+double fluid_forces(const drag::DragLaw& law, DemParticles& s, const drag::Fluid& fluid,
+                    std::size_t begin, std::size_t end, const FluidForceWindow& window, double* c,
+                    PairIsa isa);
 
 }  // namespace sphdem

@@ -139,20 +139,15 @@ void DemSubstepper::switch_pressure_force() {
   }
 }
 
-namespace {
-struct NoFluid {};  // a dry scene: no fluid force to evaluate
-}  // namespace
-
 // One pass over the owned spheres, in blocks that stay in the cache: the block's fluid
 // forces (2.68, in lanes), then each sphere's contact row (2.36) and its acceleration
 // (2.35), so that a sub-step streams the sphere arrays once.
-template <class Contact, class Drag>
-double DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean,
-                                 double weight, double dt_springs, const Advance& advance) {
+template <bool kFluid, class Contact>
+double DemSubstepper::force_rows(const Contact& contact, bool accumulate_mean, double weight,
+                                 double dt_springs, const Advance& advance) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
   if constexpr (Contact::kHistory) history_.require_aligned(contacts_, s.n_owned);
-  constexpr bool kFluid = !std::is_same_v<Drag, NoFluid>;
   const double bf = contact.normal.beta_factor();
   const HaloImages images = halo_.images();
   const FluidForceWindow window{accumulate_mean, weight, p_.variational};
@@ -186,8 +181,8 @@ double DemSubstepper::force_rows(const Contact& contact, const Drag& drag, bool 
     for (std::size_t block = begin; block < end; block += kForceBlock) {
       const std::size_t block_end = std::min(end, block + kForceBlock);
       if constexpr (kFluid)
-        rate_max =
-            std::max(rate_max, fluid_forces(drag, s, fluid, block, block_end, window, drag_c, isa));
+        rate_max = std::max(rate_max,
+                            fluid_forces(p_.drag, s, fluid, block, block_end, window, drag_c, isa));
       for (std::size_t j = block; j < block_end; ++j) {
         const ContactRow c =
             contact_row(s, contacts_, contact, bf, history_, images, 0.0, dt_springs, j);
@@ -285,14 +280,9 @@ double DemSubstepper::forces_advancing(bool accumulate_mean, double weight, doub
   double max_step2 = 0.0;
   std::visit(
       [&](const auto& contact) {
-        if (!p_.fluid_force)
-          max_step2 = force_rows(contact, NoFluid{}, accumulate_mean, weight, dt_springs, advance);
-        else
-          std::visit(
-              [&](const auto& drag) {
-                max_step2 = force_rows(contact, drag, accumulate_mean, weight, dt_springs, advance);
-              },
-              p_.drag);
+        max_step2 = p_.fluid_force
+                        ? force_rows<true>(contact, accumulate_mean, weight, dt_springs, advance)
+                        : force_rows<false>(contact, accumulate_mean, weight, dt_springs, advance);
       },
       p_.law);
   if (advance.correct) {  // the next sub-step's arrays become the current ones
@@ -493,24 +483,18 @@ bool DemSubstepper::substeps_multirate(double dt, double h, int count) {
   if (p_.rotation) near_history(true);
   const double drift_at_start = drift_;
   double free_reach = 0.0, near_reach = 0.0, rate_free = 0.0, rate_near = 0.0;
+  for (int k = 0; k < free_count; ++k) {
+    const double hf = T / free_count;
+    free_reach += std::sqrt(free_step(hf, 0.5 * hf / dt, k == 0));
+    rate_free = drag_rate_max_;
+  }
+  // the near spheres back to the start, then sub-stepped
+  for (int f = 0; f < n_state; ++f)
+    for (const std::uint32_t j : near_) (*state[f])[j] = saved_[f * n + j];
   std::visit(
-      [&](const auto& drag) {
-        for (int k = 0; k < free_count; ++k) {
-          const double hf = T / free_count;
-          free_reach += std::sqrt(free_step(drag, hf, 0.5 * hf / dt, k == 0));
-          rate_free = drag_rate_max_;
-        }
-        // the near spheres back to the start, then sub-stepped
-        for (int f = 0; f < n_state; ++f)
-          for (const std::uint32_t j : near_) (*state[f])[j] = saved_[f * n + j];
-        std::visit(
-            [&](const auto& contact) {
-              near_reach = near_substeps(contact, drag, h, count, 0.5 * h / dt);
-            },
-            p_.law);
-        rate_near = drag_rate_max_;
-      },
-      p_.drag);
+      [&](const auto& contact) { near_reach = near_substeps(contact, h, count, 0.5 * h / dt); },
+      p_.law);
+  rate_near = drag_rate_max_;
   const double reach = std::max(free_reach, near_reach);
   if (2.0 * reach >= margin) {  // a sphere may have met another: back to the start
     for (int f = 0; f < n_state; ++f)
@@ -533,8 +517,7 @@ bool DemSubstepper::substeps_multirate(double dt, double h, int count) {
 // (the first of a half step): the step starts from the force in the fluid fields of this
 // evaluation, not the last sub-step's in the previous ones (a sub-step would feel those
 // for h, this step for h_free: its x would lag by h_free^2 / 2 times the change).
-template <class Drag>
-double DemSubstepper::free_step(const Drag& drag, double h, double weight, bool fresh) {
+double DemSubstepper::free_step(double h, double weight, bool fresh) {
   DemParticles& s = s_;
   const long n = static_cast<long>(s.n_owned);
   drag_c_.resize(s.n_owned);
@@ -549,7 +532,7 @@ double DemSubstepper::free_step(const Drag& drag, double h, double weight, bool 
     for (std::size_t block = begin; block < end; block += kForceBlock) {
       const std::size_t block_end = std::min(end, block + kForceBlock);
       if (fresh) {
-        fluid_forces(drag, s, p_.fluid, block, block_end, FluidForceWindow{}, drag_c, isa_);
+        fluid_forces(p_.drag, s, p_.fluid, block, block_end, FluidForceWindow{}, drag_c, isa_);
         for (std::size_t j = block; j < block_end; ++j) {
           const double inv_m = 1.0 / s.mass[j];
           s.ax[j] = s.fx[j] * inv_m + g[0];
@@ -564,8 +547,8 @@ double DemSubstepper::free_step(const Drag& drag, double h, double weight, bool 
         max_step2 = std::max(max_step2, predict(s, j, h));
         s.overlap_max[j] = 0.0;
       }
-      rate_max = std::max(rate_max,
-                          fluid_forces(drag, s, p_.fluid, block, block_end, window, drag_c, isa_));
+      rate_max = std::max(
+          rate_max, fluid_forces(p_.drag, s, p_.fluid, block, block_end, window, drag_c, isa_));
       for (std::size_t j = block; j < block_end; ++j) {
         const double inv_m = 1.0 / s.mass[j];
         s.ax[j] = s.fx[j] * inv_m + g[0];
@@ -584,9 +567,8 @@ double DemSubstepper::free_step(const Drag& drag, double h, double weight, bool 
 // The contact sub-steps of the near spheres (as substeps_apart's, over their list); their
 // neighbours out of reach stand where their own step left them. Returns the sum over the
 // sub-steps of the largest step.
-template <class Contact, class Drag>
-double DemSubstepper::near_substeps(const Contact& contact, const Drag& drag, double h, int count,
-                                    double weight) {
+template <class Contact>
+double DemSubstepper::near_substeps(const Contact& contact, double h, int count, double weight) {
   DemParticles& s = s_;
   const long m = static_cast<long>(near_.size());
   const std::uint32_t* const near = near_.data();
@@ -625,8 +607,8 @@ double DemSubstepper::near_substeps(const Contact& contact, const Drag& drag, do
 #pragma omp parallel for schedule(static) reduction(max : rate_max) if (m > kMinParallelSpheres)
     for (long q = 0; q < m; ++q) {
       const std::size_t j = near[q];
-      rate_max = std::max(
-          rate_max, fluid_forces(drag, s, p_.fluid, j, j + 1, window, drag_c, PairIsa::kBaseline));
+      rate_max = std::max(rate_max, fluid_forces(p_.drag, s, p_.fluid, j, j + 1, window, drag_c,
+                                                 PairIsa::kBaseline));
       const ContactRow c = contact_row(s, contacts_, contact, bf, history_, images, 0.0, h, j);
       store_torque_and_overlap<Contact>(s, j, c);
       const double inv_m = 1.0 / s.mass[j];

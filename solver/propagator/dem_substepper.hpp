@@ -120,9 +120,10 @@ class DemSubstepper {
   // returns the largest predictor step squared (0 without `predict`)
   double forces_advancing(bool accumulate_mean, double weight, double dt_springs,
                           const Advance& advance);
-  template <class Contact, class Drag>
-  double force_rows(const Contact& contact, const Drag& drag, bool accumulate_mean, double weight,
-                    double dt_springs, const Advance& advance);
+  // kFluid false: a dry scene, no fluid force to evaluate (the law is not read)
+  template <bool kFluid, class Contact>
+  double force_rows(const Contact& contact, bool accumulate_mean, double weight, double dt_springs,
+                    const Advance& advance);
   // The sub-steps of a half step with the corrector and predictor (of the velocity and
   // the spin) in the force pass: one pass over the spheres per sub-step (without rigid
   // groups).
@@ -130,11 +131,9 @@ class DemSubstepper {
   // Spheres out of contact take the fluid's step, the others the contact sub-steps; false
   // where that does not pay or cannot be trusted (the half step is then as it was).
   bool substeps_multirate(double dt, double h, int count);
-  template <class Drag>
-  double free_step(const Drag& drag, double h, double weight, bool fresh);
-  template <class Contact, class Drag>
-  double near_substeps(const Contact& contact, const Drag& drag, double h, int count,
-                       double weight);
+  double free_step(double h, double weight, bool fresh);
+  template <class Contact>
+  double near_substeps(const Contact& contact, double h, int count, double weight);
   // ... and with the predictor a pass of its own (the rigid groups' shared force comes
   // between)
   void substeps_apart(double h, int count, double weight);

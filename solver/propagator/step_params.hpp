@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "coupling/drag_laws.hpp"
+#include "coupling/drag_law_table.hpp"
 #include "dem/contact_registry.hpp"
 #include "domain/box.hpp"
 #include "scene/scene.hpp"

@@ -8,25 +8,17 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "run/log_columns.hpp"
+
 namespace sphdem {
 
 std::vector<std::string> RunLog::columns(const std::vector<SpeciesSpec>& species) {
-  std::vector<std::string> c = {"time",
-                                "step",
-                                "dt_sph",
-                                "dt_dem",
-                                "fluid_mass",
-                                "kinetic_energy_fluid",
-                                "kinetic_energy_solid",
-                                "max_overlap_over_d",
-                                "max_density_error",
-                                "voidage_clamped",
-                                "omega_bounded",
-                                "excess_pore_pressure_base",
-                                "wall_load_base",
-                                "fluid_load_base"};
-  for (const char* q : {"vz_mean", "slip_z_mean", "com_z"})
-    for (const auto& s : species) c.push_back(fmt::format("{}:{}", q, s.name));
+  std::vector<std::string> c;
+  for (const LogColumn& col : log_columns()) {
+    if (!col.per_species) c.push_back(col.name);
+    for (std::size_t s = 0; col.per_species && s < species.size(); ++s)
+      c.push_back(fmt::format("{}:{}", col.name, species[s].name));
+  }
   return c;
 }
 
@@ -67,13 +59,14 @@ RunLog::RunLog(const std::string& path, const std::vector<SpeciesSpec>& species,
 }
 
 void RunLog::write(const Diagnostics& d) {
-  std::string row = fmt::format(
-      "{:.17g},{},{:.6g},{:.6g},{:.12g},{:.9g},{:.9g},{:.6g},{:.6g},{},{},{:.6g},{:.6g},{:.6g}",
-      d.time, d.step, d.dt_sph, d.dt_dem, d.fluid_mass, d.kinetic_energy_fluid,
-      d.kinetic_energy_solid, d.max_overlap_over_d, d.max_density_error, d.voidage_clamped,
-      d.omega_bounded, d.excess_pore_pressure_base, d.wall_load_base, d.fluid_load_base);
-  for (const auto* v : {&d.vz_mean, &d.slip_z_mean, &d.com_z})
-    for (double x : *v) row += fmt::format(",{:.17g}", x);  // exact: compared with the in-situ data
+  std::string row;
+  for (const LogColumn& col : log_columns()) {
+    const std::size_t n = col.per_species ? d.com_z.size() : 1;
+    for (std::size_t s = 0; s < n; ++s) {
+      if (!row.empty()) row += ',';
+      col.append(row, d, s);
+    }
+  }
   out_ << row << '\n';
   out_.flush();
 }

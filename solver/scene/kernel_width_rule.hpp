@@ -14,7 +14,7 @@
 // interpolated coupling has no such drag: h.
 #include <string>
 
-#include "coupling/drag_laws.hpp"
+#include "coupling/drag_law_table.hpp"
 #include "scene/scene.hpp"
 
 namespace sphdem {

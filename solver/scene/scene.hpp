@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "coupling/drag_laws.hpp"
+#include "coupling/drag_law_table.hpp"
 #include "dem/contact_model.hpp"
 #include "dem/rolling_model.hpp"
 #include "dem/tangential_model.hpp"

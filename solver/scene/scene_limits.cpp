@@ -5,15 +5,15 @@
 #include <algorithm>
 #include <cmath>
 
-#include "coupling/drag_laws.hpp"
+#include "coupling/drag_law_table.hpp"
 #include "scene/contact_stiffness_rule.hpp"
+#include "scene/kernel_width_rule.hpp"
 #include "scene/sound_speed_rule.hpp"
 #include "sph/kernel.hpp"
 
 namespace sphdem {
 
 namespace {
-constexpr double kStokesReynoldsMax = 2.0;
 constexpr double kWeaklyCompressibleLimit = 0.01;
 constexpr double kOverlapLimit = 0.1;  // of d
 }  // namespace
@@ -54,19 +54,22 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
                                  "it would rise through the free surface, above which there is "
                                  "no fluid; allowed: density >= fluid.density",
                                  sp.name, sp.density, fl.density)});
-    if (std::holds_alternative<drag::Stokes>(sc.drag) && g > 0.0) {
+    const drag::DragLawInfo& law = drag::drag_law_info(sc.drag);
+    if (std::isfinite(law.reynolds_max) && g > 0.0) {
       const double d = sp.d_max();
-      const double v = std::abs(sp.density - fl.density) * g * d * d / (18.0 * fl.viscosity);
+      const double v = terminal_speed(sc.drag, d, sp.density, fl.density, fl.viscosity, g);
       const double re = fl.density * v * d / fl.viscosity;
-      if (re > kStokesReynoldsMax)
+      if (re > law.reynolds_max) {
+        std::vector<std::string> valid;
+        for (const drag::DragLawInfo& other : drag::kDragLaws)
+          if (other.reynolds_max >= re && other.voidage_function) valid.push_back(other.name);
         out.push_back(
             {"drag.law",
-             fmt::format("species '{}' settles at a terminal Reynolds number {:.3g} by Stokes' "
-                         "law (2.73), valid to Re = {} (Stokes' drag is then {:.0f} % below "
-                         "Schiller-Naumann's); choose a law for this Re (di_felice, "
-                         "brown_lawler)",
-                         sp.name, re, kStokesReynoldsMax,
-                         100.0 * (1.0 - 1.0 / (1.0 + 0.15 * std::pow(re, 0.687))))});
+             fmt::format("species '{}' settles at a terminal Reynolds number {:.3g} by {} "
+                         "({}), valid to Re = {}; choose a law valid at this Re ({})",
+                         sp.name, re, law.name, law.equations, law.reynolds_max,
+                         fmt::join(valid, ", "))});
+      }
     }
   }
   if (fl.enabled) {

@@ -7,8 +7,9 @@
 //    drag law's voidage function then gives it the drag of a suspension. V W(0) <= 0.025
 //    (d/h <= 0.48; a terminal slip within 5 % of the lone sphere's, validation/README.md;
 //    with double smoothing, a big sphere's kernel is its own and the fluid's in quadrature);
-//  - a sphere's terminal Reynolds number within its drag law's range: Stokes' law
-//    (2.73) up to Re = 2 (there Schiller-Naumann's 1 + 0.15 Re^0.687 is 1.24);
+//  - a sphere's terminal Reynolds number within its drag law's range (the table's
+//    reynolds_max, coupling/drag_law_table.hpp: Stokes' law (2.73) up to Re = 2, where
+//    Schiller-Naumann's 1 + 0.15 Re^0.687 is 1.24);
 //  - spheres no lighter than the fluid under gravity: they would rise through the
 //    free surface, above which the model has no fluid;
 //  - the sound speed's expected density error (scene/sound_speed_rule.hpp) within the

@@ -602,10 +602,9 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
   }
   {
     MapReader r(top.child("drag"), "drag", problems);
-    const std::string law =
-        r.choice("law", "di_felice",
-                 {std::begin(drag::kDragLawNames), std::end(drag::kDragLawNames)})
-            .value_or("di_felice");
+    std::vector<std::string> names;
+    for (const drag::DragLawInfo& info : drag::kDragLaws) names.push_back(info.name);
+    const std::string law = r.choice("law", "di_felice", names).value_or("di_felice");
     drag::drag_law_from_name(law, sc.drag);
     r.finish();
   }

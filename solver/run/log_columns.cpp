@@ -1,0 +1,71 @@
+#include "run/log_columns.hpp"
+
+#include <fmt/format.h>
+
+namespace sphdem {
+
+namespace {
+
+template <class... T>
+void put(std::string& row, fmt::format_string<T...> f, T&&... v) {
+  fmt::format_to(std::back_inserter(row), f, std::forward<T>(v)...);
+}
+
+}  // namespace
+
+const std::vector<LogColumn>& log_columns() {
+  using D = const Diagnostics&;
+  using S = std::size_t;
+  // %.17g where a value is compared bit for bit (time; the species' means with the
+  // in-situ data), fewer digits where the value is a diagnostic.
+  static const std::vector<LogColumn> columns = {
+      {"time", "s", "simulated time since release", false,
+       [](std::string& r, D d, S) { put(r, "{:.17g}", d.time); }},
+      {"step", "–", "SPH steps since release", false,
+       [](std::string& r, D d, S) { put(r, "{}", d.step); }},
+      {"dt_sph", "s", "current SPH step", false,
+       [](std::string& r, D d, S) { put(r, "{:.6g}", d.dt_sph); }},
+      {"dt_dem", "s", "DEM sub-step of the last SPH step", false,
+       [](std::string& r, D d, S) { put(r, "{:.6g}", d.dt_dem); }},
+      {"fluid_mass", "kg", "total mass of the mobile fluid particles (constant)", false,
+       [](std::string& r, D d, S) { put(r, "{:.12g}", d.fluid_mass); }},
+      {"kinetic_energy_fluid", "J", "Σ ½ m u² over the fluid particles", false,
+       [](std::string& r, D d, S) { put(r, "{:.9g}", d.kinetic_energy_fluid); }},
+      {"kinetic_energy_solid", "J", "Σ ½ m v² over the spheres (translation only)", false,
+       [](std::string& r, D d, S) { put(r, "{:.9g}", d.kinetic_energy_solid); }},
+      {"max_overlap_over_d", "–",
+       "largest sphere–sphere or sphere–wall overlap / d at the last contact evaluation", false,
+       [](std::string& r, D d, S) { put(r, "{:.6g}", d.max_overlap_over_d); }},
+      {"max_density_error", "–", "max \\|ρ_a / (ε_a ρ0) − 1\\| over the fluid particles", false,
+       [](std::string& r, D d, S) { put(r, "{:.6g}", d.max_density_error); }},
+      {"voidage_clamped", "count",
+       "fluid particles whose ε was raised to `coupling.voidage_floor` in the last voidage pass",
+       false, [](std::string& r, D d, S) { put(r, "{}", d.voidage_clamped); }},
+      {"omega_bounded", "count",
+       "fluid particles whose grad-h Ω (2.54) was clamped to [0.5, 2] in the last density-rate "
+       "pass",
+       false, [](std::string& r, D d, S) { put(r, "{}", d.omega_bounded); }},
+      {"excess_pore_pressure_base", "–",
+       "the base's excess pore pressure read in the first fluid layer (z < `fluid.spacing`): "
+       "the mean of (P_a − ρf \\|g\\| (H − z_a)) / (ρf \\|g\\| H), a point reading through the "
+       "kernel sums (`fluid_load_base` is the load; `analysis/pore_pressure.*`)",
+       false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.excess_pore_pressure_base); }},
+      {"wall_load_base", "–",
+       "the spheres' contact load on the bottom wall, Σ k max(0, r_i − z_i) / (A ρf \\|g\\| H)",
+       false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.wall_load_base); }},
+      {"fluid_load_base", "–",
+       "the fluid's excess load on the bottom wall (the wall particles' forces on the column "
+       "less the clear column's weight) over A ρf \\|g\\| H: with `wall_load_base` it closes the "
+       "column's momentum balance, (1 − n)(ρs/ρf − 1) at steady settling (eq. 15)",
+       false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.fluid_load_base); }},
+      {"vz_mean", "m/s", "mean vertical velocity of the spheres of the species", true,
+       [](std::string& r, D d, S s) { put(r, "{:.17g}", d.vz_mean[s]); }},
+      {"slip_z_mean", "m/s", "mean superficial slip ε_i (u_f,z − v_z) (2.74) of the species", true,
+       [](std::string& r, D d, S s) { put(r, "{:.17g}", d.slip_z_mean[s]); }},
+      {"com_z", "m", "mass-weighted mean height of the species", true,
+       [](std::string& r, D d, S s) { put(r, "{:.17g}", d.com_z[s]); }},
+  };
+  return columns;
+}
+
+}  // namespace sphdem
