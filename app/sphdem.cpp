@@ -3,12 +3,14 @@
 //   sphdem resume DIR [--set time.end=T]
 //   sphdem check CASE.yaml [--set ...]
 //   sphdem figures DIR
+//   sphdem docs [BLOCK] [--update FILE...]
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -19,6 +21,7 @@
 #include "propagator/simulation.hpp"
 #include "run/checkpoints.hpp"
 #include "run/runner.hpp"
+#include "run/table_docs.hpp"
 #include "scene/fidelity.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_limits.hpp"
@@ -38,6 +41,26 @@ int make_figures(const std::string& dir) {
       fmt::format("/usr/bin/python3 '{}/figures.py' '{}'", SPHDEM_PIPELINES_DIR, dir);
   const int rc = std::system(cmd.c_str());
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : 1;
+}
+
+// `sphdem docs`: a generated block to stdout, or the files' blocks rewritten in place.
+int print_or_update_docs(const std::string& block, const std::vector<std::string>& files) {
+  try {
+    if (!block.empty()) std::cout << sphdem::generated_block(block);
+    for (const std::string& f : files) {
+      std::ifstream in(f);
+      std::stringstream text;
+      text << in.rdbuf();
+      const std::string now = sphdem::with_generated_blocks(text.str());
+      if (now == text.str()) continue;
+      std::ofstream(f) << now;
+      std::cerr << "sphdem: docs: rewrote " << f << "\n";
+    }
+    return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "sphdem: error: " << e.what() << "\n";
+    return 2;
+  }
 }
 
 // A run with its in-situ analysis and VTK output, fresh or continued from a checkpoint;
@@ -158,7 +181,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   run->add_flag("--no-insitu", no_insitu, "skip the in-situ analysis and figures");
   std::string fidelity;
-  const auto presets = {"fast", "balanced", "accurate"};
+  std::vector<std::string> presets;
+  for (const auto& p : sphdem::kFidelityPresets) presets.push_back(p.name);
   run->add_option("--fidelity", fidelity,
                   "preset for the keys the scene leaves unset (scene key fidelity)")
       ->check(CLI::IsMember(presets));
@@ -185,8 +209,21 @@ int main(int argc, char** argv) {
   auto* figures = app.add_subcommand("figures", "(re)make the figures of a run directory");
   figures->add_option("dir", fig_dir, "run directory")->required()->check(CLI::ExistingDirectory);
 
+  std::string doc_block;
+  std::vector<std::string> doc_files;
+  auto* docs = app.add_subcommand(
+      "docs",
+      "print a table of the documents from the solver's own tables, or rewrite those tables in "
+      "FILEs (run/table_docs.hpp)");
+  docs->add_option("block", doc_block,
+                   "what to print: 'keys SECTION...' (- for the top level), 'fidelity presets', "
+                   "'drag laws', 'log columns', 'pipelines', 'fuzz dictionary'");
+  docs->add_option("--update", doc_files, "rewrite every generated block of these files")
+      ->check(CLI::ExistingFile);
+
   CLI11_PARSE(app, argc, argv);
   if (*figures) return make_figures(fig_dir);
+  if (*docs) return print_or_update_docs(doc_block, doc_files);
   if (!fidelity.empty()) overrides.insert(overrides.begin(), "fidelity=" + fidelity);
   sphdem::install_stop_signals();
   try {

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -35,14 +36,14 @@ struct DragLawRow : DragLawInfo {
 inline constexpr double kAnyReynolds = std::numeric_limits<double>::infinity();
 
 inline constexpr std::tuple kDragLawTable{
-    DragLawRow<Stokes>{{"stokes", false, 2.0, "2.73",
-                        "Stokes' law 3π μ d u_s: one sphere in clear fluid (no voidage function)"}},
+    DragLawRow<Stokes>{
+        {"stokes", false, 2.0, "2.73", "Stokes' law 3π μ d u_s: one sphere in clear fluid"}},
     DragLawRow<DiFeliceDallavalle>{
         {"di_felice", true, 1e4, "2.76–2.79",
          "Di Felice's voidage function with Dallavalle's C_d (Di Felice 1994)"}},
     DragLawRow<CoulsonRichardson>{
         {"coulson_richardson", false, kAnyReynolds, "2.75",
-         "Coulson & Richardson's single sphere over a wide Re range, with \\|u_s\\| u_s"}},
+         "Coulson & Richardson's single sphere over a wide Re range, with |u_s| u_s"}},
     DragLawRow<BrownLawler>{
         {"brown_lawler", true, 2e5, "2.76, 2.79",
          "Brown & Lawler's C_d (2003) with Di Felice's voidage function (Zhao et al. 2014)"}},
@@ -78,6 +79,17 @@ inline constexpr std::array<DragLawInfo, kDragLawCount> kDragLaws = std::apply(
     },
     kDragLawTable);
 
+// The names, null-terminated (the choices of drag.law).
+struct DragLawNames {
+  const char* names[kDragLawCount + 1];
+};
+inline constexpr DragLawNames kDragLawNames = [] {
+  DragLawNames n{};
+  for (std::size_t i = 0; i < kDragLawCount; ++i) n.names[i] = kDragLaws[i].name;
+  n.names[kDragLawCount] = nullptr;
+  return n;
+}();
+
 inline const DragLawInfo& drag_law_info(const DragLaw& law) {
   return kDragLaws[law.index()];
 }
@@ -88,6 +100,13 @@ inline std::string drag_law_name(const DragLaw& law) {
 // The law named `name` into `out`; false (out unchanged) for an unknown name.
 inline bool drag_law_from_name(const std::string& name, DragLaw& out) {
   return detail::emplace_named(name, out, std::make_index_sequence<kDragLawCount>{});
+}
+
+// The law named `name` (one of the table's; std::invalid_argument otherwise).
+inline DragLaw drag_law_named(const std::string& name) {
+  DragLaw law;
+  if (!drag_law_from_name(name, law)) throw std::invalid_argument("no drag law '" + name + "'");
+  return law;
 }
 
 template <class Variant, std::size_t... I>

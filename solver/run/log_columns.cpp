@@ -36,7 +36,7 @@ const std::vector<LogColumn>& log_columns() {
       {"max_overlap_over_d", "–",
        "largest sphere–sphere or sphere–wall overlap / d at the last contact evaluation", false,
        [](std::string& r, D d, S) { put(r, "{:.6g}", d.max_overlap_over_d); }},
-      {"max_density_error", "–", "max \\|ρ_a / (ε_a ρ0) − 1\\| over the fluid particles", false,
+      {"max_density_error", "–", "max |ρ_a / (ε_a ρ0) − 1| over the fluid particles", false,
        [](std::string& r, D d, S) { put(r, "{:.6g}", d.max_density_error); }},
       {"voidage_clamped", "count",
        "fluid particles whose ε was raised to `coupling.voidage_floor` in the last voidage pass",
@@ -47,15 +47,15 @@ const std::vector<LogColumn>& log_columns() {
        false, [](std::string& r, D d, S) { put(r, "{}", d.omega_bounded); }},
       {"excess_pore_pressure_base", "–",
        "the base's excess pore pressure read in the first fluid layer (z < `fluid.spacing`): "
-       "the mean of (P_a − ρf \\|g\\| (H − z_a)) / (ρf \\|g\\| H), a point reading through the "
+       "the mean of (P_a − ρf |g| (H − z_a)) / (ρf |g| H), a point reading through the "
        "kernel sums (`fluid_load_base` is the load; `analysis/pore_pressure.*`)",
        false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.excess_pore_pressure_base); }},
       {"wall_load_base", "–",
-       "the spheres' contact load on the bottom wall, Σ k max(0, r_i − z_i) / (A ρf \\|g\\| H)",
+       "the spheres' contact load on the bottom wall, Σ k max(0, r_i − z_i) / (A ρf |g| H)",
        false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.wall_load_base); }},
       {"fluid_load_base", "–",
        "the fluid's excess load on the bottom wall (the wall particles' forces on the column "
-       "less the clear column's weight) over A ρf \\|g\\| H: with `wall_load_base` it closes the "
+       "less the clear column's weight) over A ρf |g| H: with `wall_load_base` it closes the "
        "column's momentum balance, (1 − n)(ρs/ρf − 1) at steady settling (eq. 15)",
        false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.fluid_load_base); }},
       {"vz_mean", "m/s", "mean vertical velocity of the spheres of the species", true,

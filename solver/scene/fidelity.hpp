@@ -6,6 +6,8 @@
 // by side for the scene at hand.
 #include <string>
 
+#include "scene/scene_keys.hpp"
+
 namespace sphdem {
 
 struct FidelityPreset {
@@ -17,15 +19,27 @@ struct FidelityPreset {
   double max_overlap;            // contact.max_overlap, for contact.stiffness: auto
 };
 
-// Expected density error 1/(2 f^2) from the column's weight: 0.78 %, 0.5 %, 0.13 % (fast
-// at 7.5, 0.89 %, let its default run start past the 1 % limit: bench/TRADEOFF.md).
-// accurate keeps the scene's dx: a finer dx brings h towards d, and a lone sphere then
-// sees more of its own volume in the voidage its drag reads (bench/TRADEOFF.md).
+// Expected density error 1/(2 f^2) from the column's weight (bench/TRADEOFF.md). accurate
+// keeps the scene's dx: a finer dx brings h towards d, and a lone sphere then sees more
+// of its own volume in the voidage its drag reads (bench/TRADEOFF.md). balanced is the
+// keys' own defaults (scene/scene_keys.hpp); the names are the choices of `fidelity`.
 inline constexpr FidelityPreset kFidelityPresets[] = {
     {"fast", 0.8, 8.0, 0.3, 10, 0.02},
-    {"balanced", 1.0, 10.0, 0.25, 20, 0.01},
+    {"balanced", scene_default("fluid.resolution"), scene_default("fluid.sound_speed_factor"),
+     scene_default("time.cfl"), scene_default("time.dem_steps_per_contact"),
+     scene_default("contact.max_overlap")},
     {"accurate", 1.0, 20.0, 0.2, 40, 0.005},
 };
+
+constexpr bool preset_names_are_the_choices() {
+  const char* const* choice = key_choices::kFidelity;
+  for (const FidelityPreset& p : kFidelityPresets) {
+    if (!*choice || std::string_view(p.name) != *choice) return false;
+    ++choice;
+  }
+  return *choice == nullptr;
+}
+static_assert(preset_names_are_the_choices(), "kFidelityPresets and the choices of 'fidelity'");
 
 inline const FidelityPreset* find_fidelity_preset(const std::string& name) {
   for (const FidelityPreset& p : kFidelityPresets)

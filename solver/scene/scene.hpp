@@ -13,27 +13,29 @@
 #include "dem/rolling_model.hpp"
 #include "dem/tangential_model.hpp"
 #include "domain/box.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/size_distribution.hpp"
 #include "sph/kernel.hpp"
 
 namespace sphdem {
 
+// The keys' meanings, units, ranges and defaults are in the scene key table
+// (scene/scene_keys.hpp); the members below start at the table's defaults.
 struct FluidSpec {
-  double density = 1000.0;           // rho_f (kg/m^3)
-  double viscosity = 8.9e-4;         // mu (Pa s)
-  double spacing = 2.0e-4;           // initial lattice spacing dx (m)
-  double smoothing_factor = 1.5;     // sigma in h = sigma (m/rho)^(1/3), eq. 2.65
-  double fill_height = 0.0;          // free-surface height (m); 0 = the box height
-  double expected_speed = 0.0;       // u_m (m/s) for B, eq. 2.64; 0 = largest terminal speed
-  double sound_speed = 0.0;          // c0 (m/s); 0 = auto (scene_loader.cpp, physics.md §1)
-  double sound_speed_factor = 10.0;  // that factor (scene/fidelity.hpp)
-  double resolution = 1.0;  // layers per `spacing`: dx = spacing / resolution (resolved to 1)
-  double alpha_artificial =
-      0.0;  // Monaghan alpha on approaching pairs only (off: it adds viscosity)
-  double density_diffusion = 0.1;  // delta of the density diffusion (sph/density_diffusion.hpp)
-  int gamma = 7;
-  int wall_layers = 3;
-  bool enabled = true;  // false: spheres only (dry DEM), no SPH particles
+  double density = scene_default("fluid.density");      // rho_f (kg/m^3)
+  double viscosity = scene_default("fluid.viscosity");  // mu (Pa s)
+  double spacing = scene_default("fluid.spacing");      // initial lattice spacing dx (m)
+  double smoothing_factor = scene_default("fluid.smoothing_factor");  // sigma of (2.65)
+  double fill_height = 0;     // free-surface height (m), resolved (0 in a file: the box height)
+  double expected_speed = 0;  // u_m (m/s) for B, eq. 2.64, resolved
+  double sound_speed = 0;     // c0 (m/s), resolved (scene_loader.cpp, physics.md §1)
+  double sound_speed_factor = scene_default("fluid.sound_speed_factor");
+  double resolution = 1;  // layers per `spacing`: dx = spacing / resolution (resolved to 1)
+  double alpha_artificial = scene_default("fluid.alpha_artificial");    // Monaghan's alpha
+  double density_diffusion = scene_default("fluid.density_diffusion");  // delta
+  int gamma = static_cast<int>(scene_default("fluid.gamma"));
+  int wall_layers = static_cast<int>(scene_default("fluid.wall_layers"));
+  bool enabled = scene_default("fluid.enabled") != 0;  // false: dry DEM, no SPH particles
 
   // h of the initial lattice: sigma dx (2.65 with m/rho = dx^3, the hydrostatic start)
   double lattice_h() const { return smoothing_factor * spacing; }
@@ -65,79 +67,80 @@ struct ParticleGroupSpec {
   std::string species;                             // the species (random: the first of `mixture`)
   std::array<double, 3> position{0, 0, 0};         // single: centre
   std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};  // lattice, random: region
-  double voidage = 0.9;                            // lattice, random: target voidage of the region
+  double voidage = scene_default("particles.N.voidage");  // lattice, random: target voidage
   bool fcc = false;  // lattice: face-centred cubic (4 sites a cell, in (100) layers a/2 apart),
                      // else simple cubic
   std::vector<std::string> mixture;  // random: species names (one or more)
   std::vector<double> fractions;     // random: number fractions of `mixture` (sum 1)
   std::int64_t seed = 0;             // random: seed of the positions and diameters
   std::array<double, 3> velocity{0, 0, 0};
-  double velocity_jitter = 0.0;    // each component + uniform in [-jitter, jitter] (m/s)
-  std::int64_t velocity_seed = 1;  // seed of the jitter
-  bool rigid = false;              // constant-porosity block: moves rigidly (thesis §4.5)
+  double velocity_jitter = 0.0;  // each component + uniform in [-jitter, jitter] (m/s)
+  std::int64_t velocity_seed =
+      static_cast<std::int64_t>(scene_default("particles.N.velocity_seed"));
+  bool rigid = false;  // constant-porosity block: moves rigidly (thesis §4.5)
 };
 
 struct ContactSpec {
   // normal.k: a number, or auto (the default; scene/contact_stiffness_rule.hpp), which the
   // loader resolves and records in stiffness_reason.
-  LinearSpringDashpot normal{10.0, 0.0, -1.0, false};
-  double max_overlap = 0.01;     // the largest overlap / d the automatic stiffness allows
+  LinearSpringDashpot normal;
+  double max_overlap = scene_default("contact.max_overlap");  // the overlap / d auto allows
   std::string stiffness_reason;  // what auto chose and why (empty when the file gave k)
   TangentialParams tangential;   // model none unless the scene turns friction on
   RollingParams rolling;         // model none unless the scene turns rolling resistance on
-  double skin = 0.3;             // Verlet skin as a fraction of the largest diameter
+  double skin = scene_default("contact.skin");  // Verlet skin / the largest diameter
 };
 
 struct TimeSpec {
-  double end = 0.02;                  // simulated time after release (s)
-  double cfl = 0.25;                  // dt_SPH <= cfl h / v_sig (eq. 3.5 with support 2h)
-  double dem_steps_per_contact = 20;  // dt_DEM <= t_c / this (eq. 3.7)
+  double end = scene_default("time.end");  // simulated time after release (s)
+  double cfl = scene_default("time.cfl");  // dt_SPH <= cfl h / v_sig (eq. 3.5 with support 2h)
+  double dem_steps_per_contact = scene_default("time.dem_steps_per_contact");  // (3.7)
   // Spheres out of contact take the drag's step, not the contact's (DemSubstepper)
-  bool multirate = true;
+  bool multirate = scene_default("time.multirate") != 0;
   // ... unless a neighbour or the wall is within this many times the farthest a sphere
   // goes in a half step at its start's speed and acceleration (below 2: always sent back)
-  double multirate_margin = 4;
-  double max_dt_sph = 1e-3;  // upper cap (s)
+  double multirate_margin = scene_default("time.multirate_margin");
+  double max_dt_sph = scene_default("time.max_dt_sph");  // upper cap (s)
 };
 
 struct StartupSpec {
-  int relax_steps = 200;  // fluid-only steps with spheres held, before t = 0
-  double damping = 0.02;  // fraction of fluid velocity removed per relaxation step
+  int relax_steps = static_cast<int>(scene_default("startup.relax_steps"));
+  double damping = scene_default("startup.damping");  // of the fluid velocity, per step
 };
 
 struct OutputSpec {
-  double log_interval = 0.0;       // (s); 0 = end / 200
-  double progress_interval = 2.0;  // wall-clock seconds between terminal progress lines
-  double vtk_every = 0.0;          // (s) between full .vtp snapshots + .pvd; 0 = none
+  double log_interval = 0;                                               // (s), resolved
+  double progress_interval = scene_default("output.progress_interval");  // wall-clock (s)
+  double vtk_every = scene_default("output.vtk.every");  // (s) between .vtp snapshots; 0 = none
 };
 
 // Checkpoints (run/checkpoints.hpp): DIR/checkpoints/ckpt_<step>.h5, the newest `keep`
 // kept. One is due every `every` of simulated time and every `wall_interval` of wall
 // time (0: not by that clock), at SIGINT/SIGTERM, and at the end of the run.
 struct CheckpointSpec {
-  double every = 0.0;             // (s) simulated time
-  double wall_interval = 1800.0;  // (s) wall-clock time
-  int keep = 2;
-  bool at_end = true;
+  double every = scene_default("checkpoint.every");                  // (s) simulated time
+  double wall_interval = scene_default("checkpoint.wall_interval");  // (s) wall-clock time
+  int keep = static_cast<int>(scene_default("checkpoint.keep"));
+  bool at_end = scene_default("checkpoint.at_end") != 0;
 };
 
 // The watchdog's bounds (analysis/watchdog.hpp), checked after every step.
 struct WatchdogSpec {
-  bool enabled = true;
-  double density_error = 0.05;    // |rho/(eps rho0) - 1|: 5 times the weakly compressible 1 %
-  double overlap = 0.2;           // largest overlap / d (the model's limit refuses 0.1 d expected)
-  double safeguard_share = 0.01;  // share of the fluid held by the voidage floor or Omega clamp
+  bool enabled = scene_default("watchdog.enabled") != 0;
+  double density_error = scene_default("watchdog.density_error");  // |rho/(eps rho0) - 1|
+  double overlap = scene_default("watchdog.overlap");              // largest overlap / d
+  // share of the fluid held by the voidage floor or Omega clamp
+  double safeguard_share = scene_default("watchdog.safeguard_share");
 };
 
 // In-situ analysis through Catalyst (catalyst/, pipelines/).
 struct InSituSpec {
-  double every = 0.0;  // (s) between analyses; 0 = end / 50
-  std::vector<std::string> pipelines{"voidage_height", "interfaces", "com_tracks", "snapshots"};
-  int snapshot_every = 5;     // analyses between PNG snapshots
-  double grid_spacing = 0.0;  // voidage grid spacing (m); 0 = fluid.spacing
-  double reference_velocity =
-      -1.0;  // Kynch line (m/s); < 0: none, 0: Di Felice of the first block or suspension
-  bool enabled = true;
+  double every = 0;                    // (s) between analyses, resolved
+  std::vector<std::string> pipelines;  // names of kInSituPipelines (scene/insitu_pipelines.hpp)
+  int snapshot_every = static_cast<int>(scene_default("insitu.snapshot_every"));  // analyses
+  double grid_spacing = 0;        // voidage grid spacing (m), resolved
+  double reference_velocity = 0;  // Kynch line (m/s), resolved: < 0 none
+  bool enabled = scene_default("insitu.enabled") != 0;
 };
 
 // Bidisperse voidage by double smoothing (thesis §3.4, 3.8-3.10): the big species are
@@ -148,7 +151,7 @@ struct DoubleSmoothingSpec {
   std::vector<std::string> big_species;  // default: the species with the largest diameter
   // h_b / d_big. The thesis takes h_b = 2 d_big with its kernel of support h (eq. 2.11),
   // i.e. h_b/h_s = d_big/dx; with our support 2h and h_s = 1.5 dx that ratio is h_b = 1.5 d_big.
-  double h_over_d = 1.5;
+  double h_over_d = scene_default("coupling.big_h_over_d");
 };
 
 // How the fluid pressure couples fluid and spheres.
@@ -186,7 +189,7 @@ struct DoubleSmoothingSpec {
 enum class PressureCoupling { kInterpolated, kVariational };
 
 struct Scene {
-  std::string name = "scene";
+  std::string name{scene_key("name").text};
   std::string description;
   std::string source = "<defaults>";  // file it came from (for error messages)
   Box box;
@@ -195,18 +198,18 @@ struct Scene {
   std::vector<SpeciesSpec> species;
   std::vector<ParticleGroupSpec> particles;
   ContactSpec contact;
-  drag::DragLaw drag = drag::DiFeliceDallavalle{};  // drag.law, default di_felice
-  double voidage_floor = 0.3;
+  drag::DragLaw drag = drag::drag_law_named(std::string(scene_key("drag.law").text));
+  double voidage_floor = scene_default("coupling.voidage_floor");
   DoubleSmoothingSpec double_smoothing;
   PressureCoupling pressure_coupling = PressureCoupling::kInterpolated;
   bool hydrostatic_split = false;
-  double sphere_kernel_scale = 1.0;  // H / h, see PressureCoupling
-  double drag_kernel_scale = 1.0;    // H_drag / h, see PressureCoupling
+  double sphere_kernel_scale = 1;  // H / h, see PressureCoupling (resolved)
+  double drag_kernel_scale = 1;    // H_drag / h, see PressureCoupling (resolved)
   // The loader's record of coupling.sphere_kernel_scale: auto (scene/kernel_width_rule.hpp):
   // what it chose and why (empty when the file gave a number).
   std::string sphere_kernel_reason;
-  std::string fidelity = "balanced";  // the preset (scene/fidelity.hpp)
-  std::string fidelity_note;          // what the preset's resolution did to fluid.spacing
+  std::string fidelity{scene_key("fidelity").text};  // the preset (scene/fidelity.hpp)
+  std::string fidelity_note;  // what the preset's resolution did to fluid.spacing
   TimeSpec time;
   StartupSpec startup;
   OutputSpec output;
