@@ -51,8 +51,8 @@ const std::vector<LogColumn>& log_columns() {
        "kernel sums (`fluid_load_base` is the load; `analysis/pore_pressure.*`)",
        false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.excess_pore_pressure_base); }},
       {"wall_load_base", "–",
-       "the spheres' contact load on the bottom wall, Σ k max(0, r_i − z_i) / (A ρf |g| H)",
-       false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.wall_load_base); }},
+       "the spheres' contact load on the bottom wall, Σ k max(0, r_i − z_i) / (A ρf |g| H)", false,
+       [](std::string& r, D d, S) { put(r, "{:.6g}", d.wall_load_base); }},
       {"fluid_load_base", "–",
        "the fluid's excess load on the bottom wall (the wall particles' forces on the column "
        "less the clear column's weight) over A ρf |g| H: with `wall_load_base` it closes the "
