@@ -69,7 +69,7 @@ struct DemParticles {
   static void visit_fields(Self& p, F& f) {
     constexpr unsigned kConst = kState | kConstant;
     constexpr unsigned kMoving = kState | kHaloOnBuild;  // positions, velocities, spins
-    f(FieldInfo{"species", kConst}, p.species);
+    f(FieldInfo{"species", kConst | kHaloOnBuild}, p.species);
     f(FieldInfo{"rigid_group", kConst}, p.rigid_group);
     f(FieldInfo{"id", kConst | kHaloOnBuild}, p.id);
     f(FieldInfo{"x", kMoving | kPosition}, p.x);
