@@ -77,9 +77,8 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
 #ifdef SPHDEM_HAVE_CATALYST
   std::unique_ptr<sphdem::InSitu> insitu;
   std::unique_ptr<sphdem::VtkSnapshots> snapshots;
-  const sphdem::GridSpec grid =
-      sphdem::column_voidage_grid(scene.box.length(0), scene.box.length(1), scene.fill_height(),
-                                  scene.insitu.grid_spacing, scene.fluid.lattice_h());
+  const sphdem::GridSpec grid = sphdem::column_voidage_grid(
+      scene.box.length(0), scene.box.length(1), scene.fill_height(), scene.insitu.grid_spacing);
   std::vector<double> voidage;
   if (scene.insitu.enabled && !no_insitu && !scene.insitu.pipelines.empty()) {
     sphdem::InSituOptions io;
@@ -92,7 +91,7 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
     sphdem::install_stop_signals();  // ParaView's logger installed its own for SIGINT, SIGTERM
     opt.hooks.push_back(
         {"in-situ analysis", scene.insitu.every, [&](const sphdem::Simulation& sim, long call) {
-           voidage = voidage_on_grid(sim, grid, scene.fluid.lattice_h());
+           voidage = voidage_on_grid(sim, grid);
            const std::vector<int> contacts = contact_counts(sim.spheres(), sim.contact_list());
            sphdem::InSituFrame fr;
            fr.fluid = &sim.fluid();

@@ -8,7 +8,8 @@
 //               smoothing_length, kind, id)
 //   "particles" vtkPolyData: spheres (velocity, diameter, density, species,
 //               fluid_force, contact_count, id)
-//   "voidage"   vtkImageData: the voidage field on a regular grid (same kernel)
+//   "voidage"   vtkImageData: the solver's voidage on a regular grid over the column
+//               (analysis/voidage_grid.hpp)
 // Field data on every channel: time, step, analysis, resume_time, resume_step, species_names,
 // column_height, box, solid_volume, reference_velocity, scene (the resolved case.yaml text).
 #include <limits>

@@ -1,11 +1,10 @@
 #pragma once
 // Bulk density profile of the mixture (Zhao, Houlsby & Utili 2014, eq. 14, Fig. 8):
 //   rho_bulk(z) = eps(z) rho_f + (1 - eps(z)) rho_s,
-// eps(z) the voidage on the analysis grid (analysis/voidage_grid.hpp: eq. 2.50 with the
-// solver's kernel) averaged over the nodes of each horizontal layer. Within one kernel
-// support 2h of the wall the kernel reaches below z = 0 where there are no spheres, so
-// eps is over-estimated there and rho_bulk under-estimated (the solver's own voidage
-// has the same truncation).
+// eps(z) the solver's voidage on the analysis grid (analysis/voidage_grid.hpp) averaged
+// over the nodes of each horizontal layer. Within a kernel support of the wall the kernel
+// reaches below z = 0 where there are no spheres, so eps is over-estimated there and
+// rho_bulk under-estimated (the solver's own first layers have the same truncation).
 #include <string>
 #include <vector>
 

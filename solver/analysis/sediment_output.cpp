@@ -22,16 +22,13 @@ void write_sediment_output(const Simulation& sim, const std::string& out_dir) {
   const bool one_density =
       std::all_of(sc.species.begin(), sc.species.end(),
                   [&](const SpeciesSpec& sp) { return sp.density == sc.species[0].density; });
-  // The voidage grid needs the sphere halo at the fluid's kernel reach: without fluid
-  // (dry DEM) the halo only spans the contacts, and there is no voidage field to report.
+  // Without fluid (dry DEM) there is no voidage field to report.
   if (one_density && sc.fluid.enabled) {
-    const double h = sc.fluid.lattice_h();
-    const GridSpec grid = column_voidage_grid(sc.box.length(0), sc.box.length(1), sc.box.length(2),
-                                              sc.fluid.spacing, h);
-    write_bulk_density_csv(
-        bulk_density_profile(voidage_on_grid(sim, grid, h), grid, sc.fluid.density,
-                             sc.species[0].density, sc.fill_height()),
-        (dir / "bulk_density.csv").string());
+    const GridSpec grid =
+        column_voidage_grid(sc.box.length(0), sc.box.length(1), sc.fill_height(), sc.fluid.spacing);
+    write_bulk_density_csv(bulk_density_profile(voidage_on_grid(sim, grid), grid, sc.fluid.density,
+                                                sc.species[0].density, sc.fill_height()),
+                           (dir / "bulk_density.csv").string());
   }
   double d_lo = std::numeric_limits<double>::infinity(), d_hi = 0;
   for (const auto& sp : sc.species) {

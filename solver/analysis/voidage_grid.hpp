@@ -1,14 +1,23 @@
 #pragma once
-// The voidage field on a regular grid, for analysis: at each node x,
-//   eps(x) = 1 - sum_j V_j W(x - x_j, h)         (2.50, with the solver's kernel)
-// from the spheres binned in `cells` (owned + halo). Not clamped, so that
-// sum over nodes of (1 - eps) dV equals the solid volume the grid encloses.
+// The solver's voidage on a regular grid, for analysis (the in-situ voidage map, the
+// bulk density profile). At a node x it is the sum the solver takes at a mobile fluid
+// particle standing there (coupling/voidage.hpp, double_smoothing.hpp):
+//   h(x)   = sum_b V_b h_b W(x - x_b, h_b) / sum_b V_b W(x - x_b, h_b)  (mobile fluid b)
+//   eps(x) = 1 - sum_j V_j W(x - x_j, s h(x))                            (2.50)
+//            - sum_b V_b phi_b W(x - x_b, h(x)) / sum_b V_b W(x - x_b, h(x))  (3.10)
+// with s = coupling.sphere_kernel_scale, the first sum over the spheres not smoothed
+// apart and the second only with the double smoothing (phi_b of 3.9 at every SPH
+// particle b): the kernel widths of each species and the double smoothing are the
+// solver's, and h(x) is the smoothing length a fluid particle at x would have. Not
+// clamped to the voidage floor; 1 where no fluid particle reaches.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "dem/dem_particles.hpp"
-#include "domain/cell_list.hpp"
+#include "domain/box.hpp"
+#include "sph/fluid_particles.hpp"
 
 namespace sphdem {
 
@@ -24,16 +33,33 @@ struct GridSpec {
   }
 };
 
-// Grid covering [0, Lx) x [0, Ly) with nodes at cell centres, and z from -2h to
-// top + 2h so that the kernel of every sphere in the column lies inside it.
-GridSpec column_voidage_grid(double lx, double ly, double top, double spacing, double h);
+// The column [0, Lx) x [0, Ly) x [0, height] with nodes at cell centres: a whole number
+// of cells across each periodic width and up the column, each about `spacing`.
+GridSpec column_voidage_grid(double lx, double ly, double height, double spacing);
+
+// What the sums read: fluid particles and spheres, owned first and their periodic images
+// after (x, y, z, h, mass, rho and kind of the fluid; x, y, z, radius and species of the
+// spheres), far enough round the nodes for the widest kernel.
+struct VoidageSources {
+  const FluidParticles& fluid;
+  const DemParticles& spheres;
+  double sphere_kernel_scale = 1;
+  // the double smoothing: per species, smoothed apart or not, and (3.9) at every fluid
+  // particle; both null without it
+  const std::vector<std::uint8_t>* is_big = nullptr;
+  const std::vector<double>* phi = nullptr;
+};
+
+// The owned particles and their periodic images within `width` of the faces, owned
+// first (a run's own halo copies may be stale between its list builds).
+FluidParticles with_periodic_images(const FluidParticles& owned, const Box& box, double width);
+DemParticles with_periodic_images(const DemParticles& owned, const Box& box, double width);
 
 // Values in VTK order (x fastest), for the nodes of spec.extent.
-std::vector<double> compute_voidage_grid(const DemParticles& s, const CellList& cells,
-                                         const GridSpec& spec, double h);
+std::vector<double> voidage_at_nodes(const VoidageSources& src, const GridSpec& spec);
 
-// The same from a run's spheres, binned afresh (they have moved since the step's list
-// build); throws if the kernel's support exceeds the sphere halo.
-std::vector<double> voidage_on_grid(const Simulation& sim, const GridSpec& spec, double h);
+// The same from a run's particles at their present positions (with periodic images of
+// the owned particles made afresh, and phi recomputed with the double smoothing).
+std::vector<double> voidage_on_grid(const Simulation& sim, const GridSpec& spec);
 
 }  // namespace sphdem

@@ -432,10 +432,11 @@ class EndToEndTest(unittest.TestCase):
         dz = np.diff(z)
         self.assertTrue(np.allclose(dz, dz[0], rtol=1e-9), "uneven z grid")
         self.assertEqual(eps.shape[1], len(z))
-        # The grid reaches one kernel support below 0 and above H, so every sphere's
-        # kernel lies inside it and the sum is the kernel's integral, exact up to the
-        # quadrature of a smooth kernel: measured 1.5e-4 with the default grid
-        # (200 um = 2h/3), 2e-7 with 100 um. 1 % leaves room for coarser grids.
+        # The grid covers the column [0, H] and the block lies more than a kernel
+        # support from the wall and the surface, so every sphere's kernel lies inside
+        # it and the sum is the kernel's integral, up to the quadrature of a smooth
+        # kernel and the variation of h from node to node (the map is the solver's
+        # voidage, analysis/voidage_grid.hpp). 1 % leaves room for coarser grids.
         vol = (1.0 - eps).sum(axis=1) * dz[0] * lx * ly
         err = vol / solid - 1.0
         print("voidage integral: %d rows, max |rel err| %.2e" % (len(vol), np.abs(err).max()), file=sys.stderr)

@@ -30,7 +30,6 @@
 
 #include "analysis/voidage_grid.hpp"
 #include "dem/dem_particles.hpp"
-#include "domain/cell_list.hpp"
 #include "insitu.hpp"
 #include "scene/scene.hpp"
 #include "sph/fluid_particles.hpp"
@@ -153,27 +152,6 @@ P owned_part(const P& all, int rank, int nranks) {
 // All spheres followed by their 8 lateral periodic images (radius and position only:
 // all that the voidage grid reads), so the kernel mass that crosses a periodic face
 // comes back through the opposite one, as with the solver's halo copies.
-DemParticles with_periodic_images(const DemParticles& s) {
-  DemParticles out;
-  const std::size_t n = s.size();
-  out.resize(9 * n);
-  std::size_t k = 0;
-  // the unshifted copy first, so indices [0, n) are the spheres themselves
-  const int shifts[9][2] = {{0, 0}, {-1, -1}, {-1, 0}, {-1, 1}, {0, -1},
-                            {0, 1}, {1, -1},  {1, 0},  {1, 1}};
-  for (const auto& sh : shifts)
-    for (std::size_t i = 0; i < n; ++i, ++k) {
-      out.x[k] = s.x[i] + sh[0] * kLx;
-      out.y[k] = s.y[i] + sh[1] * kLy;
-      out.z[k] = s.z[i];
-      out.radius[k] = s.radius[i];
-      out.mass[k] = s.mass[i];
-      out.species[k] = s.species[i];
-    }
-  out.n_owned = n;
-  return out;
-}
-
 void write_known_com(const std::string& path, const std::vector<std::vector<double>>& rows) {
   FILE* f = std::fopen(path.c_str(), "w");
   if (!f) throw std::runtime_error("cannot write " + path);
@@ -195,9 +173,9 @@ int run(int argc, char** argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &nranks);
 
   const Scene scene = load_scene_text(kSceneYaml, "two_rank_driver");
-  const double h = scene.fluid.lattice_h();
+  const double reach = kernel::kSupport * scene.fluid.lattice_h();
   const GridSpec whole = column_voidage_grid(scene.box.length(0), scene.box.length(1),
-                                             scene.fill_height(), scene.insitu.grid_spacing, h);
+                                             scene.fill_height(), scene.insitu.grid_spacing);
 
   // this rank's contiguous slab of z nodes
   GridSpec piece = whole;
@@ -208,6 +186,7 @@ int run(int argc, char** argv) {
   DemParticles all = make_spheres();
   const FluidParticles fluid_all = make_fluid(scene);
   const FluidParticles fluid = owned_part(fluid_all, rank, nranks);
+  const FluidParticles fluid_images = with_periodic_images(fluid_all, scene.box, reach);
 
   InSituOptions io;
   io.out_dir = argv[1];
@@ -227,11 +206,9 @@ int run(int argc, char** argv) {
 
       spheres = owned_part(all, rank, nranks);
       owned_spheres = spheres.n_owned;
-      const DemParticles images = with_periodic_images(all);
-      CellList cells;
-      cells.build(images.x.data(), images.y.data(), images.z.data(), images.size(),
-                  kernel::kSupport * h);
-      voidage = compute_voidage_grid(images, cells, piece, h);
+      // every rank sums over all particles, with their periodic images
+      const DemParticles sphere_images = with_periodic_images(all, scene.box, reach);
+      voidage = voidage_at_nodes({fluid_images, sphere_images}, piece);
 
       InSituFrame fr;
       fr.fluid = &fluid;

@@ -968,15 +968,20 @@ TEST(SceneRandomGroup, Errors) {
 }
 
 TEST(SceneRandomGroup, KynchLineFromTheSuspension) {
-  // reference_velocity 0: Di Felice hindered settling at the random group's voidage.
+  // reference_velocity 0 (the default: a user's suspension gets its Kynch line without
+  // asking): Di Felice hindered settling at the random group's voidage.
   const std::string yaml = R"(
 species: [{name: glass, diameter: 1.0e-4, density: 2500}]
 particles: [{type: random, species: glass, min: [0, 0, 0], max: [0.004, 0.004, 0.0048], voidage: 0.9}]
-insitu: {reference_velocity: 0}
 )";
   const Scene sc = load_scene_text(yaml, kFile);
   EXPECT_NEAR(sc.insitu.reference_velocity, 4.912e-3,
               0.001e-3);  // eq. 4.4 at eps = 0.9 (physics.md §5)
+  // one sphere alone: no suspension, no line; one asked off: none
+  EXPECT_LT(load_scene_text(kBase, kFile).insitu.reference_velocity, 0.0);
+  EXPECT_LT(
+      load_scene_text(yaml, kFile, {"insitu.reference_velocity=-1"}).insitu.reference_velocity,
+      0.0);
 }
 
 TEST(SceneRandomGroup, PlacedThroughPlaceParticlesWithPerSphereMass) {
