@@ -83,7 +83,7 @@ namespace {
 template <class Particles>
 Particles imaged(const Particles& owned, const Box& box, double width) {
   Particles p = owned;
-  p.resize(p.n_owned);  // the run's own halo copies may be stale
+  p.resize(p.n_owned);         // the run's own halo copies may be stale
   for (int d = 0; d < 3; ++d)  // the images of one shell: the loader keeps kernels within it
     if (box.periodic[d]) width = std::min(width, box.length(d));
   PeriodicHalo halo;
