@@ -154,38 +154,23 @@ struct DoubleSmoothingSpec {
   double h_over_d = scene_default("coupling.big_h_over_d");
 };
 
-// How the fluid pressure couples fluid and spheres.
+// How the fluid pressure couples fluid and spheres (coupling.pressure_coupling; the forms
+// and why the defaults are what they are: cases/README.md, "drag, coupling").
 //  interpolated (thesis 2.68-2.71): each sphere gets V_j (-grad P + div tau) interpolated
 //    from the fluid's SPH acceleration, and the fluid gets it back with the drag, as the
-//    mean over one SPH step. Where the voidage varies strongly (eps < ~0.75 next to clear
-//    fluid: a packed bed) the fluid's SPH pressure term and the returned share do not
-//    cancel at the kernel scale and the fluid is linearly unstable (ARCHITECTURE.md).
+//    mean over one SPH step.
 //  variational: the pressure forces derive from the fluid's internal energy
 //    sum_a m_a e(rho_a / eps_a): the SPH pressure term carries eps P, the fluid gets
-//    V_a P_a grad eps_a and the spheres the exact opposite, pair by pair, at once (so
+//    V_a P_a grad eps_a and the spheres the exact opposite, pair by pair (so
 //    rho_sup Du/Dt = -eps grad P, model A); only the drag goes through the step mean.
 //    The viscous stress on the spheres, V div tau, is left out (it stays in the fluid).
-//  hydrostatic_split (variational only): the pair forces carry P - P_h(z), the departure
-//    from the hydrostatic pressure P_h = rho0 |g| (z_s - z), and P_h's own forces are
-//    added analytically (-grad P_h / rho_intrinsic on the fluid, rho0 |g| V on a sphere).
-//    Still the gradient of an energy, U + sum_a m_a P_h/rho_a' + sum_j V_j P_h(z_j), which
-//    differs from U by the constant integral of P_h; the kernel-sum errors of the pair
-//    forces then scale with P - P_h instead of the absolute P (coupling/pressure_coupling.hpp).
-//  sphere_kernel_scale H/h (both couplings; default auto, scene/kernel_width_rule.hpp: h
-//    for the interpolated coupling, 1, 1.25 or 1.5 for the variational one from the
-//    scene's extra-drag ratio): each sphere's volume is spread with the kernel
-//    at H = scale h_a in the voidage (2.50), the interpolation (2.69, 2.72), the reaction
-//    (2.71) and the variational forces. Above 1 it smooths the hole a moving sphere carries
-//    through the fluid particles: with the variational coupling a 2.8 mm grain's extra
-//    drag, -8.3 % at c0 = 34 m/s with 1, is -0.5 % with 1.5; the price is smoother
-//    voidage edges (cases/README.md).
-//  drag_kernel_scale H_drag/h (<= sphere_kernel_scale; default equal to a given
-//    sphere_kernel_scale, 1 under auto): the kernel the drag's
-//    fields are gathered with -- the voidage it reads (2.50 again, as eps_drag), the fluid
-//    velocity and the Shepard sums at the spheres (2.69, 2.72) -- and the reaction (2.71)
-//    spreads with. The fluid's own voidage and the variational pressure forces keep
-//    sphere_kernel_scale. The drag dissipates energy, so its kernel need not be the one
-//    the pressure forces derive from.
+//  hydrostatic_split (variational only): the pair forces carry P - P_h(z) and P_h's own
+//    forces are added analytically (coupling/pressure_coupling.hpp).
+//  sphere_kernel_scale H/h: each sphere's volume is spread with the kernel at H = scale
+//    h_a in the voidage (2.50), the interpolation (2.69, 2.72), the reaction (2.71) and
+//    the variational forces; drag_kernel_scale H_drag/h <= it: the kernel the drag's
+//    fields are gathered with (eps_drag, u_f and the Shepard sums at the spheres) and the
+//    reaction spreads with.
 enum class PressureCoupling { kInterpolated, kVariational };
 
 struct Scene {
