@@ -21,6 +21,7 @@
 #include <iostream>
 
 #include "headless_display.hpp"
+#include "scene/insitu_pipelines.hpp"
 #include "vtk_views.hpp"
 
 namespace sphdem {
@@ -91,13 +92,18 @@ InSitu::InSitu(const Scene& scene, const InSituOptions& opt) : impl_(std::make_u
   const int rank = m.controller->GetLocalProcessId();
 
   bool wants_render = false;
-  for (const auto& p : scene.insitu.pipelines) wants_render |= p == "snapshots";
+  for (const auto& p : scene.insitu.pipelines) {
+    const InSituPipeline* row = find_insitu_pipeline(p);
+    if (!row)
+      throw std::runtime_error("no in-situ pipeline '" + p + "' (scene/insitu_pipelines.hpp)");
+    wants_render |= row->renders;
+  }
   if (wants_render && opt.want_images) {
     m.display = std::make_unique<HeadlessDisplay>();
     m.render = m.display->available();
     if (!m.render && rank == 0)
       std::cerr << "sphdem: warning: no display for rendering (" << m.display->reason()
-                << "); the snapshots pipeline is skipped, reduced data are still computed\n";
+                << "); the pipelines that render are skipped, reduced data are still computed\n";
   }
 
   const std::string insitu_dir = (std::filesystem::path(opt.out_dir) / "insitu").string();
@@ -108,7 +114,7 @@ InSitu::InSitu(const Scene& scene, const InSituOptions& opt) : impl_(std::make_u
   m.processor = vtkSmartPointer<vtkCPProcessor>::New();
   m.processor->Initialize();
   for (const auto& name : scene.insitu.pipelines) {
-    if (name == "snapshots" && !m.render) continue;
+    if (find_insitu_pipeline(name)->renders && !m.render) continue;
     const std::string path = (std::filesystem::path(opt.pipelines_dir) / (name + ".py")).string();
     auto pipe = vtkSmartPointer<vtkCPPythonScriptV2Pipeline>::New();
     if (!pipe->Initialize(path.c_str()))
