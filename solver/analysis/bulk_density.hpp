@@ -1,10 +1,11 @@
 #pragma once
 // Bulk density profile of the mixture (Zhao, Houlsby & Utili 2014, eq. 14, Fig. 8):
 //   rho_bulk(z) = eps(z) rho_f + (1 - eps(z)) rho_s,
-// eps(z) the solver's voidage on the analysis grid (analysis/voidage_grid.hpp) averaged
-// over the nodes of each horizontal layer. Within a kernel support of the wall the kernel
-// reaches below z = 0 where there are no spheres, so eps is over-estimated there and
-// rho_bulk under-estimated (the solver's own first layers have the same truncation).
+// eps(z) the grains' voidage at the lattice's h (analysis/voidage_grid.hpp:
+// grain_voidage_on_grid; the solver's own field is smoother in a sediment, where its
+// kernels are wider) averaged over the nodes of each horizontal layer. Within a kernel
+// support of the wall the kernel reaches below z = 0 where there are no spheres, so eps is
+// over-estimated there and rho_bulk under-estimated.
 #include <string>
 #include <vector>
 

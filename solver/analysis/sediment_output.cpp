@@ -26,9 +26,10 @@ void write_sediment_output(const Simulation& sim, const std::string& out_dir) {
   if (one_density && sc.fluid.enabled) {
     const GridSpec grid =
         column_voidage_grid(sc.box.length(0), sc.box.length(1), sc.fill_height(), sc.fluid.spacing);
-    write_bulk_density_csv(bulk_density_profile(voidage_on_grid(sim, grid), grid, sc.fluid.density,
-                                                sc.species[0].density, sc.fill_height()),
-                           (dir / "bulk_density.csv").string());
+    const std::vector<double> eps = grain_voidage_on_grid(sim, grid, sc.fluid.lattice_h());
+    write_bulk_density_csv(
+        bulk_density_profile(eps, grid, sc.fluid.density, sc.species[0].density, sc.fill_height()),
+        (dir / "bulk_density.csv").string());
   }
   double d_lo = std::numeric_limits<double>::infinity(), d_hi = 0;
   for (const auto& sp : sc.species) {

@@ -27,15 +27,16 @@ std::vector<double> voidage_at_nodes(const VoidageSources& src, const GridSpec& 
   const FluidParticles& f = src.fluid;
   const DemParticles& s = src.spheres;
   const bool apart = src.is_big && src.phi;
-  double h_max = 0.0;
-  for (std::size_t b = 0; b < f.size(); ++b)
+  double h_max = src.fixed_h;
+  for (std::size_t b = 0; b < f.size() && src.fixed_h <= 0; ++b)
     if (f.kind[b] == kFluid) h_max = std::max(h_max, f.h[b]);
   std::vector<double> eps(g.count(), 1.0);
   if (h_max <= 0.0) return eps;  // no fluid
   const double fluid_reach = kernel::kSupport * h_max;
   const double sphere_reach = src.sphere_kernel_scale * fluid_reach;
   CellList fluid_cells, sphere_cells;
-  fluid_cells.build(f.x.data(), f.y.data(), f.z.data(), f.size(), fluid_reach);
+  if (src.fixed_h <= 0)
+    fluid_cells.build(f.x.data(), f.y.data(), f.z.data(), f.size(), fluid_reach);
   sphere_cells.build(s.x.data(), s.y.data(), s.z.data(), s.size(), sphere_reach);
   const auto volume = [&](std::uint32_t b) { return f.mass[b] / f.rho[b]; };
   const int nx = g.extent[1] - g.extent[0] + 1, ny = g.extent[3] - g.extent[2] + 1;
@@ -47,16 +48,20 @@ std::vector<double> voidage_at_nodes(const VoidageSources& src, const GridSpec& 
     const double x = g.origin[0] + (g.extent[0] + i) * g.spacing[0];
     const double y = g.origin[1] + (g.extent[2] + j) * g.spacing[1];
     const double z = g.origin[2] + (g.extent[4] + l) * g.spacing[2];
-    double h_sum = 0.0, weight = 0.0;  // h(x): the mobile fluid's Shepard mean
-    fluid_cells.for_each_neighbour(x, y, z, fluid_reach * fluid_reach,
-                                   [&](std::uint32_t b, double, double, double, double r2) {
-                                     if (f.kind[b] != kFluid) return;
-                                     const double vw = volume(b) * kernel::w(r2, f.h[b]);
-                                     h_sum += vw * f.h[b];
-                                     weight += vw;
-                                   });
-    if (weight <= 0.0) continue;  // no fluid reaches the node
-    const double h = h_sum / weight, H = src.sphere_kernel_scale * h;
+    double h = src.fixed_h;
+    if (h <= 0.0) {  // h(x): the mobile fluid's Shepard mean
+      double h_sum = 0.0, weight = 0.0;
+      fluid_cells.for_each_neighbour(x, y, z, fluid_reach * fluid_reach,
+                                     [&](std::uint32_t b, double, double, double, double r2) {
+                                       if (f.kind[b] != kFluid) return;
+                                       const double vw = volume(b) * kernel::w(r2, f.h[b]);
+                                       h_sum += vw * f.h[b];
+                                       weight += vw;
+                                     });
+      if (weight <= 0.0) continue;  // no fluid reaches the node
+      h = h_sum / weight;
+    }
+    const double H = src.sphere_kernel_scale * h;
     double solid = 0.0;  // (2.50), the spheres not smoothed apart
     sphere_cells.for_each_neighbour(x, y, z, kernel::kSupport * kernel::kSupport * H * H,
                                     [&](std::uint32_t p, double, double, double, double r2) {
@@ -128,6 +133,14 @@ std::vector<double> voidage_on_grid(const Simulation& sim, const GridSpec& spec)
     src.is_big = &c.is_big_species;
     src.phi = &big.phi;
   }
+  return voidage_at_nodes(src, spec);
+}
+
+std::vector<double> grain_voidage_on_grid(const Simulation& sim, const GridSpec& spec, double h) {
+  const DemParticles spheres =
+      with_periodic_images(sim.spheres(), sim.params().box, kernel::kSupport * h);
+  VoidageSources src{sim.fluid(), spheres, 1.0};
+  src.fixed_h = h;
   return voidage_at_nodes(src, spec);
 }
 

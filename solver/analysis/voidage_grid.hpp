@@ -48,6 +48,9 @@ struct VoidageSources {
   // particle; both null without it
   const std::vector<std::uint8_t>* is_big = nullptr;
   const std::vector<double>* phi = nullptr;
+  // > 0: every node and sphere at this one width (the fluid is not read): the grains'
+  // packing resolved at h, not the solver's field
+  double fixed_h = 0;
 };
 
 // The owned particles and their periodic images within `width` of the faces, owned
@@ -61,5 +64,11 @@ std::vector<double> voidage_at_nodes(const VoidageSources& src, const GridSpec& 
 // The same from a run's particles at their present positions (with periodic images of
 // the owned particles made afresh, and phi recomputed with the double smoothing).
 std::vector<double> voidage_on_grid(const Simulation& sim, const GridSpec& spec);
+
+// The grains' voidage resolved with one kernel width h at every node and sphere,
+// 1 - sum_j V_j W(x - x_j, h): the packing of the spheres (the bulk density profile,
+// analysis/bulk_density.hpp), sharper than the solver's field where the solver's kernel
+// is wider (a sediment's fluid carries larger h, the spheres' kernel may be wider still).
+std::vector<double> grain_voidage_on_grid(const Simulation& sim, const GridSpec& spec, double h);
 
 }  // namespace sphdem

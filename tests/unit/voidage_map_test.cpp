@@ -51,15 +51,6 @@ double largest_difference(const LayerMeans& m) {
   return worst;
 }
 
-// The map with one kernel width sigma dx everywhere and the spheres' kernel scale 1.
-std::vector<double> lattice_kernel_map(const Simulation& sim, const GridSpec& g) {
-  const Box& box = sim.params().box;
-  FluidParticles f = with_periodic_images(sim.fluid(), box, 1.0);
-  std::fill(f.h.begin(), f.h.end(), sim.scene().fluid.lattice_h());
-  const DemParticles s = with_periodic_images(sim.spheres(), box, 1.0);
-  return voidage_at_nodes({f, s, 1.0}, g);
-}
-
 // The fluid particles' masses as if each had started in clear fluid: their smoothing
 // lengths sigma (m/rho)^(1/3) then grow where the voidage is low, as in a sediment.
 void clear_fluid_masses(Simulation& sim) {
@@ -113,7 +104,8 @@ std::pair<double, double> compare(const char* yaml, bool wider_kernels_in_the_be
   EXPECT_GT(m.solver[4], 0.6);  // a bed
   EXPECT_LT(m.solver[4], 0.8);
   const double worst = largest_difference(m);
-  const double lattice = largest_difference(layer_means(sim, g, lattice_kernel_map(sim, g)));
+  const double lattice =
+      largest_difference(layer_means(sim, g, grain_voidage_on_grid(sim, g, sc.fluid.lattice_h())));
   std::printf("bed eps %.4f; largest layer difference: map %.2e, lattice-kernel map %.2e\n",
               m.solver[4], worst, lattice);
   return {worst, lattice};

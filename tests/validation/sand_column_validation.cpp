@@ -135,14 +135,15 @@ class SandColumn : public ::testing::Test {
     // Bulk density of the bed two ways: (i) all the solid under the bed's top surface,
     // rho_f + (rho_s - rho_f) V_s / (A z_top), which z_top (the highest sphere's top)
     // biases low by up to half a grain layer; (ii) the largest value of the profile of the
-    // solver's voidage (its kernel's support about half the bed's thickness, so it smooths
-    // the bed with the clear water above and the empty wall below).
+    // grains' voidage at the lattice's h (its kernel's support about half the bed's
+    // thickness, so it smooths the bed with the clear water above and the empty wall below).
     r.rho_bed_solid =
         sc.fluid.density + (sand.density - sc.fluid.density) * solid / (area * r.z_top);
     const GridSpec grid =
         column_voidage_grid(sc.box.length(0), sc.box.length(1), H, sc.fluid.spacing);
     const BulkDensityProfile prof =
-        bulk_density_profile(voidage_on_grid(sim, grid), grid, sc.fluid.density, sand.density, H);
+        bulk_density_profile(grain_voidage_on_grid(sim, grid, sc.fluid.lattice_h()), grid,
+                             sc.fluid.density, sand.density, H);
     r.rho_profile_max = *std::max_element(prof.bulk_density.begin(), prof.bulk_density.end());
     r.steps = sim.step_count();
     {
