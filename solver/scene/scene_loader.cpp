@@ -8,15 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <optional>
-#include <set>
 #include <sstream>
 
 #include "coupling/hindered_settling.hpp"
 #include "scene/contact_stiffness_rule.hpp"
-#include "scene/did_you_mean.hpp"
-#include "scene/fidelity.hpp"
 #include "scene/kernel_width_rule.hpp"
 #include "scene/map_reader.hpp"
 #include "scene/scene.hpp"
