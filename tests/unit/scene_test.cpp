@@ -659,7 +659,7 @@ TEST(SceneOverrides, BadAssignments) {
   error_of(kBase + "gravity: [0, 0, -9.81]\n", {"gravity.3=1"}, {"'3'", "index in [0, 3)"});
 }
 
-// LOADER PROBLEM (scene_loader.cpp:148-151): a --set path that continues below a
+// LOADER PROBLEM (fixed): a --set path that continues below a
 // scalar (typo fluid.density.x=1 for fluid.density=1) lets yaml-cpp's BadSubscript
 // escape; the CLI then reports "run failed: operator[] call on a scalar" with exit 1
 // instead of a SceneError naming the --set (exit 2).
@@ -717,7 +717,7 @@ TEST(SceneRoundTrip, ReloadsToTheSameScene) {
   }
 }
 
-// LOADER PROBLEM (scene_loader.cpp:348, SetDoublePrecision(12)): case.yaml keeps 12
+// LOADER PROBLEM (fixed, SetDoublePrecision(12)): case.yaml keeps 12
 // significant digits, so the resolved c0 = 10 sqrt(2 g H) = 3.4310348293189912 is
 // written as 3.43103482932 and a rerun from DIR/case.yaml does not use the c0 (nor
 // the u_m) that ran. 17 significant digits (max_digits10) round-trip exactly.
@@ -731,7 +731,7 @@ TEST(SceneRoundTrip, ResolvedValuesAreBitExact) {
 // ---------------------------------------------------------------------------------
 // Further loader problems, each shown by a test that fails until it is fixed.
 
-// scene_loader.cpp:54: number() checks `v > hi` with hi = infinity, so .inf passes
+// The loader (fixed): number() checks `v > hi` with hi = infinity, so .inf passes
 // every "(0, inf]" key: time.end = .inf loads (a run that never ends, log_interval =
 // inf), fluid.viscosity = .inf loads. vec3() already rejects non-finite numbers.
 TEST(SceneLoaderProblems, InfinityIsRejected) {
@@ -740,7 +740,7 @@ TEST(SceneLoaderProblems, InfinityIsRejected) {
   error_of(kBase, {"contact.stiffness=.inf"}, {"'contact.stiffness'"});
 }
 
-// scene_loader.cpp:252: the lattice-region check names 'min' for the x axis and 'max'
+// The loader (fixed): the lattice-region check names 'min' for the x axis and 'max'
 // for y and z, whatever bound is wrong: a negative min z is reported as 'particles.0.max'.
 TEST(SceneLoaderProblems, LatticeRegionErrorNamesTheWrongBound) {
   const std::string yaml = R"(
@@ -752,7 +752,7 @@ particles: [{type: lattice, species: glass, min: [0, 0, -0.001], max: [0.004, 0.
            {"'particles.0.max'"});
 }
 
-// scene_loader.cpp:304: top-level unknown keys are checked last, so a misspelt
+// The loader (fixed): top-level unknown keys are checked last, so a misspelt
 // section is hidden behind the error it causes: 'specis:' reports
 // "key 'particles.0.species': 'glass' is not a species", never naming 'specis'.
 TEST(SceneLoaderProblems, MisspeltSectionIsNamed) {
@@ -765,13 +765,13 @@ TEST(SceneLoaderProblems, DuplicateKeyIsAnError) {
   error_of(kBase + "fluid: {density: 1000, density: 2000}\n", {"fluid.density"});
 }
 
-// scene_loader.cpp:95: a non-scalar key ('? [a, b]') throws yaml-cpp's
+// The loader (fixed): a non-scalar key ('? [a, b]') throws yaml-cpp's
 // TypedBadConversion out of finish(), not a SceneError naming the file.
 TEST(SceneLoaderProblems, NonScalarKeyIsASceneError) {
   error_of(kBase + "? [a, b]\n: 1\n", {kFile});
 }
 
-// scene_loader.cpp:220-221: a species without diameter (or density) is reported as
+// The loader (fixed): a species without diameter (or density) is reported as
 // "must be in (0, inf] (got 0)", a value the file never gave; it should say the key
 // is required.
 TEST(SceneLoaderProblems, MissingRequiredKeySaysRequired) {
