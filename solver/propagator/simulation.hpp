@@ -34,6 +34,8 @@ class Simulation {
   // depends on lists built before.
   void write_state(CheckpointWriter& w) const;
   bool rebuilds_all_next_step() const { return steps_since_sort_ + 1 >= sort_interval_; }
+  // The next step re-sorts the particles and rebuilds every list (before a checkpoint).
+  void rebuild_all_next_step() { steps_since_sort_ = sort_interval_ - 1; }
 
   // Start-up: fluid steps with the spheres held, velocities damped (physics.md §4).
   void relax();
@@ -70,7 +72,11 @@ class Simulation {
   // The contact neighbour list of the last build (every pair within the skin; analysis).
   const ContactNeighbourList& contact_list() const { return dem_.contacts(); }
   // Steps between re-sorting the owned particles into cell order (default 20; tests).
-  void set_sort_interval(int steps) { sort_interval_ = steps; }
+  // The particles are re-sorted (and every list rebuilt) every `steps` steps from now.
+  void set_sort_interval(int steps) {
+    sort_interval_ = steps;
+    steps_since_sort_ = 0;
+  }
   // Full rebuilds of the fluid's neighbour lists so far (Verlet skin; diagnostics).
   long neighbour_builds() const { return neighbour_builds_; }
   // The fluid's half pair list and its Verlet skin (tests).
@@ -137,8 +143,8 @@ class Simulation {
   std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
   double time_ = 0, dt_sph_ = 0;
   double cell_size_ = 0;
-  int steps_since_sort_ = 0;
-  int sort_interval_ = 20;
+  int sort_interval_ = 100;  // steps between re-sorts (bench/RESULTS.md, session 25)
+  int steps_since_sort_ = sort_interval_ - 1;  // the first step sorts (placement order)
   // Verlet lists: positions and h_max at the last fluid build, the skin, whether the fluid
   // lists must be rebuilt before their next use, and the sphere list build the
   // fluid-sphere pairs index into.
