@@ -64,17 +64,20 @@ int main(int argc, char** argv) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
   const int threads = omp_get_max_threads();
-  std::printf("# %s: %zu fluid (owned SPH), %zu spheres, %d threads; setup %.2f s; %d steps "
-              "after %d relaxation and %d warm-up steps: %.4f s per step\n",
-              argv[1], sim.fluid().n_owned, sim.spheres().n_owned, threads,
-              std::chrono::duration<double>(t1 - t0).count(), steps,
-              sim.scene().startup.relax_steps, warmup, wall / steps);
-  std::printf("# per step: %.3g fluid-sphere list entries, %.3g within the kernel, %.3g drag "
-              "entries, %.3g fluid pair entries\n",
-              fluid_sphere / steps, within / steps, drag / steps, fluid_pairs / steps);
-  std::printf("# list builds over the steps: %ld fluid (all lists), %ld sphere halo and contact "
-              "list (each renews the fluid-sphere pairs)\n",
-              sim.neighbour_builds() - fluid_builds, sim.dem().list_builds() - dem_builds);
+  std::printf(
+      "# %s: %zu fluid (owned SPH), %zu spheres, %d threads; setup %.2f s; %d steps "
+      "after %d relaxation and %d warm-up steps: %.4f s per step\n",
+      argv[1], sim.fluid().n_owned, sim.spheres().n_owned, threads,
+      std::chrono::duration<double>(t1 - t0).count(), steps, sim.scene().startup.relax_steps,
+      warmup, wall / steps);
+  std::printf(
+      "# per step: %.3g fluid-sphere list entries, %.3g within the kernel, %.3g drag "
+      "entries, %.3g fluid pair entries\n",
+      fluid_sphere / steps, within / steps, drag / steps, fluid_pairs / steps);
+  std::printf(
+      "# list builds over the steps: %ld fluid (all lists), %ld sphere halo and contact "
+      "list (each renews the fluid-sphere pairs)\n",
+      sim.neighbour_builds() - fluid_builds, sim.dem().list_builds() - dem_builds);
   std::printf("%-16s %12s %7s %22s\n", "pass", "ms/step", "share", "pairs/s/thread");
   const auto& names = PassTimers::kNames;
   for (int k = 0; k < PassTimers::kCount; ++k) {
