@@ -13,6 +13,22 @@
 
 namespace sphdem {
 
+namespace {
+
+// v sized n for values the caller writes before reading: a vector outgrown is allocated
+// anew with a quarter to spare, its old values not copied (a list of 1e7 entries grows by
+// a few hundred between builds).
+template <class T>
+void fresh_size(std::vector<T>& v, std::size_t n) {
+  if (n > v.capacity()) {
+    std::vector<T>().swap(v);
+    v.reserve(n + n / 4);
+  }
+  v.resize(n);
+}
+
+}  // namespace
+
 void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_cells,
                                   double kernel_scale, double rc, double drag_kernel_scale) {
   scale = kernel_scale;
@@ -20,10 +36,11 @@ void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_c
   if (drag_scale > scale)
     throw std::invalid_argument("FluidSpherePairs: the drag's kernel reaches beyond the pairs'");
   list.build(dem_cells, f.x.data(), f.y.data(), f.z.data(), f.n_owned, rc, false);
-  sphere.resize(list.neighbour.size());
-  w.resize(list.neighbour.size());
-  grad.resize(list.neighbour.size());
-  w_drag.resize(drag_apart() ? list.neighbour.size() : 0);
+  const std::size_t n = list.neighbour.size();
+  fresh_size(sphere, n);
+  fresh_size(w, n);
+  fresh_size(grad, n);
+  fresh_size(w_drag, drag_apart() ? n : 0);
   count.assign(f.n_owned, 0);
   solid.resize(f.n_owned);
   solid_over_d.resize(f.n_owned);

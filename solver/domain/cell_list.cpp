@@ -7,8 +7,8 @@ namespace sphdem {
 
 void CellList::build(const double* x, const double* y, const double* z, std::size_t n,
                      double max_cutoff, int reach) {
-  if (!(max_cutoff > 0) || reach < 1)
-    throw std::invalid_argument("CellList: cut-off must be > 0, reach >= 1");
+  if (!(max_cutoff > 0) || reach < 1 || reach > 3)
+    throw std::invalid_argument("CellList: cut-off must be > 0, reach in [1, 3]");
   const double cell_size = max_cutoff / reach;
   reach_ = reach;
   n_ = n;

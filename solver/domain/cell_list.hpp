@@ -22,6 +22,19 @@ class CellList {
   // where (dx,dy,dz) = p - x_j. rc must not exceed max_cutoff.
   template <class F>
   void for_each_neighbour(double px, double py, double pz, double rc2, F&& f) const {
+    for_each_run(px, py, pz, [&](std::uint32_t b, std::uint32_t e) {
+      for (std::uint32_t k = b; k < e; ++k) {
+        const double dx = px - xs_[k], dy = py - ys_[k], dz = pz - zs_[k];
+        const double r2 = dx * dx + dy * dy + dz * dz;
+        if (r2 < rc2) f(index_[k], dx, dy, dz, r2);
+      }
+    });
+  }
+
+  // Calls run(b, e) for each contiguous run [b, e) of binned slots that for_each_neighbour
+  // walks around p (the candidates; slot k holds point index()[k] at xs()[k], ys()[k], zs()[k]).
+  template <class F>
+  void for_each_run(double px, double py, double pz, F&& run) const {
     if (n_ == 0) return;
     const int cx = clampi(static_cast<int>(std::floor((px - lo_[0]) * inv_)), nc_[0]);
     const int cy = clampi(static_cast<int>(std::floor((py - lo_[1]) * inv_)), nc_[1]);
@@ -30,15 +43,24 @@ class CellList {
     for (int iz = std::max(cz - reach_, 0); iz <= std::min(cz + reach_, nc_[2] - 1); ++iz) {
       for (int iy = std::max(cy - reach_, 0); iy <= std::min(cy + reach_, nc_[1] - 1); ++iy) {
         const std::size_t row = (static_cast<std::size_t>(iz) * nc_[1] + iy) * nc_[0];
-        const std::uint32_t b = start_[row + x0], e = start_[row + x1 + 1];
-        for (std::uint32_t k = b; k < e; ++k) {
-          const double dx = px - xs_[k], dy = py - ys_[k], dz = pz - zs_[k];
-          const double r2 = dx * dx + dy * dy + dz * dz;
-          if (r2 < rc2) f(index_[k], dx, dy, dz, r2);
-        }
+        run(start_[row + x0], start_[row + x1 + 1]);
       }
     }
   }
+  // The runs for_each_run visits, into run[0..count): [run[r][0], run[r][1]); returns count.
+  static constexpr int kMaxRuns = 49;  // reach <= 3
+  int runs(double px, double py, double pz, std::uint32_t (*run)[2]) const {
+    int count = 0;
+    for_each_run(px, py, pz, [&](std::uint32_t b, std::uint32_t e) {
+      run[count][0] = b;
+      run[count++][1] = e;
+    });
+    return count;
+  }
+  const double* xs() const { return xs_.data(); }
+  const double* ys() const { return ys_.data(); }
+  const double* zs() const { return zs_.data(); }
+  const std::uint32_t* index() const { return index_.data(); }
 
   double max_cutoff() const { return cell_ * reach_; }
   std::size_t size() const { return n_; }

@@ -9,15 +9,35 @@
 
 namespace sphdem {
 
-// new index i <- old index perm[i], for every field the container lists.
+// new index i <- old index perm[i], for every field the container lists, in place: the
+// permutation's cycles once, then each field along them (no copy of a field: a copy of
+// every array of a large run is memory the system maps afresh, page by page, at each sort).
 template <class Particles>
 void permute_owned(Particles& p, const std::vector<std::uint32_t>& perm) {
+  const std::size_t n = perm.size();
+  // cycles as runs of `cycle`: start, perm[start], perm[perm[start]], ...
+  std::vector<std::uint32_t> cycle, cycle_end;
+  std::vector<bool> seen(n, false);
+  cycle.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (seen[i] || perm[i] == i) continue;
+    for (std::uint32_t j = static_cast<std::uint32_t>(i); !seen[j]; j = perm[j]) {
+      seen[j] = true;
+      cycle.push_back(j);
+    }
+    cycle_end.push_back(static_cast<std::uint32_t>(cycle.size()));
+  }
   p.for_each_field([&](const FieldInfo&, auto& v) {
-    auto tmp = v;
-    v.resize(perm.size());
-    for (std::size_t i = 0; i < perm.size(); ++i) v[i] = tmp[perm[i]];
+    v.resize(n);  // the owned ones (halo copies dropped)
+    std::size_t b = 0;
+    for (const std::uint32_t e : cycle_end) {  // v[c_k] <- v[c_{k+1}], the last <- the first
+      auto first = v[cycle[b]];
+      for (std::size_t k = b; k + 1 < e; ++k) v[cycle[k]] = v[cycle[k + 1]];
+      v[cycle[e - 1]] = first;
+      b = e;
+    }
   });
-  p.n_owned = perm.size();
+  p.n_owned = n;
 }
 
 // Sorts the owned particles by the cells of a grid of side cell_size.

@@ -19,6 +19,7 @@
 #include "run/checkpoints.hpp"
 #include "run/run_log.hpp"
 #include "run/safeguard_tally.hpp"
+#include "run/step_timing.hpp"
 #include "scene/contact_stiffness_rule.hpp"
 #include "scene/scene_limits.hpp"
 #include "scene/sound_speed_rule.hpp"
@@ -405,7 +406,9 @@ std::string describe_presets(const Scene& sc, const std::vector<Scene>& presets,
 
 std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
   const double resident_before = peak_resident_mib();
+  const auto t_setup = Clock::now();
   Simulation sim(sc);
+  const double setup_wall = since(t_setup);
   std::string s;
   s += fmt::format("scene            {} ({})\n", sc.name, sc.source);
   s += fmt::format(
@@ -506,15 +509,22 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
   // per-thread scratch, the contact history; the process's peak resident set then is
   // what the run needs (without the in-situ analysis, which ParaView adds).
   sim.step();
-  double step_wall = HUGE_VAL;  // the quickest of three more steps: lists in place, as in a run
-  for (int k = 0; k < 3; ++k) {
-    const auto t_step = Clock::now();
-    sim.step();
-    step_wall = std::min(step_wall, since(t_step));
-  }
-  const double run_wall = step_wall * sc.time.end / std::max(sim.dt_sph(), 1e-300);
-  s += fmt::format("wall time        about {} on this machine (a step takes {:.3g} s)\n",
-                   format_duration(run_wall), step_wall);
+  const StepTiming timing = time_steps(sim);
+  const double relax_wall = setup_wall + sc.startup.relax_steps * timing.step;
+  const double run_wall = relax_wall + timing.step * sc.time.end / std::max(sim.dt_sph(), 1e-300);
+  s += fmt::format(
+      "wall time        about {} on this machine, {} threads (a step takes {:.3g} s, one "
+      "thread's {:.3g} s of CPU; set-up and relaxation {}){}\n",
+      format_duration(run_wall), timing.threads, timing.step, timing.one_thread_cpu,
+      format_duration(relax_wall),
+      timing.cores_busy
+          ? fmt::format(
+                ": the cores were busy while check timed it ({} threads took {:.3g} s a step, "
+                "longer than one thread's {:.3g} s of CPU), so the step is one thread's times "
+                "{:.2g}, the share {} threads take on idle cores",
+                timing.threads, timing.threads_wall, timing.one_thread_cpu,
+                idle_thread_share(timing.threads), timing.threads)
+          : "");
   if (!presets.empty()) s += describe_presets(sc, presets, run_wall);
   s += fmt::format(
       "memory           {:.0f} MiB for the scene: the growth of the peak resident set over "

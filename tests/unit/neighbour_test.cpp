@@ -186,8 +186,8 @@ TEST_P(NeighbourListVsBruteForce, SameSetsIncludingImages) {
 // half of both (every point within 0.6 of a pair of faces sees two images of some sources).
 INSTANTIATE_TEST_SUITE_P(CutOffs, NeighbourListVsBruteForce,
                          ::testing::Values(Case{0.12, 1}, Case{0.12, 2}, Case{0.25, 1},
-                                           Case{0.25, 2}, Case{0.399, 1}, Case{0.399, 2},
-                                           Case{0.6, 1}, Case{0.6, 2}),
+                                           Case{0.25, 2}, Case{0.25, 3}, Case{0.399, 1},
+                                           Case{0.399, 2}, Case{0.6, 1}, Case{0.6, 2}),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            // e.g. rc0p399_reach2 for rc = 0.399 box units
                            return "rc0p" + std::to_string(std::lround(info.param.rc * 1000)) +
