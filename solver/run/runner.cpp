@@ -406,9 +406,10 @@ std::string describe_presets(const Scene& sc, const std::vector<Scene>& presets,
 
 std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
   const double resident_before = peak_resident_mib();
+  const double start_cpu = process_cpu_seconds();  // the program's start, as a run's
   const auto t_setup = Clock::now();
   Simulation sim(sc);
-  const double setup_wall = since(t_setup);
+  const double setup_wall = start_cpu + since(t_setup);
   std::string s;
   s += fmt::format("scene            {} ({})\n", sc.name, sc.source);
   s += fmt::format(
@@ -509,6 +510,7 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
   // per-thread scratch, the contact history; the process's peak resident set then is
   // what the run needs (without the in-situ analysis, which ParaView adds).
   sim.step();
+  const double mib_peak = peak_resident_mib();
   const StepTiming timing = time_steps(sim);
   const double relax_wall = setup_wall + sc.startup.relax_steps * timing.step;
   const double run_wall = relax_wall + timing.step * sc.time.end / std::max(sim.dt_sph(), 1e-300);
@@ -530,7 +532,7 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
       "memory           {:.0f} MiB for the scene: the growth of the peak resident set over "
       "the initial state and one step ({:.0f} -> {:.0f} MiB; particle arrays with their halo "
       "copies {:.1f} MiB, the rest lists and scratch; in-situ analysis not included)\n",
-      peak_resident_mib() - resident_before, resident_before, peak_resident_mib(), mb);
+      mib_peak - resident_before, resident_before, mib_peak, mb);
   return s;
 }
 

@@ -12,7 +12,7 @@ namespace sphdem {
 
 struct StepTiming {
   int threads = 1;            // OpenMP threads of the run
-  double threads_wall = 0;    // the quickest of the steps on those threads, wall s
+  double threads_wall = 0;    // the median of the steps on those threads, wall s
   double one_thread_cpu = 0;  // the quickest of the steps on one thread, its CPU s
   bool cores_busy = false;    // the threads took longer than one thread's CPU time
   double step = 0;            // the step on idle cores, s
@@ -23,8 +23,13 @@ struct StepTiming {
 // uses.
 double idle_thread_share(int threads);
 
-// Times `steps` steps on the run's threads, then (with more than one) `steps` on one;
-// advances sim by those 2 steps times over.
-StepTiming time_steps(Simulation& sim, int steps = 3);
+// After 3 steps unmeasured, times `steps` steps (each with the watchdog's check, as in a
+// run) on the run's threads, then (with more
+// than one) `steps` on one; advances sim by all of them.
+StepTiming time_steps(Simulation& sim, int steps = 5);
+
+// The CPU time the process has used so far: before a scene is built, what starting the
+// program took (its libraries loaded), which a run pays too.
+double process_cpu_seconds();
 
 }  // namespace sphdem
