@@ -34,8 +34,6 @@ class Simulation {
   // depends on lists built before.
   void write_state(CheckpointWriter& w) const;
   bool rebuilds_all_next_step() const { return steps_since_sort_ + 1 >= sort_interval_; }
-  // The next step re-sorts the particles and rebuilds every list (before a checkpoint).
-  void rebuild_all_next_step() { steps_since_sort_ = sort_interval_ - 1; }
 
   // Start-up: fluid steps with the spheres held, velocities damped (physics.md §4).
   void relax();

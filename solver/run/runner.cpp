@@ -284,7 +284,8 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
            << std::flush;
     }
     // Checkpoints fall due by simulated time, by wall time or by a stop request, and are
-    // written at once, with the next step set to re-sort and rebuild every list.
+    // written at the first step after which the next one re-sorts and rebuilds every list
+    // (within 100 steps): writing one never changes the run's course.
     if (sim.time() >= st.next_checkpoint * (1.0 - 1e-9)) {
       checkpoint_due = true;
       while (st.next_checkpoint <= sim.time() * (1.0 + 1e-9)) st.next_checkpoint += cs.every;
@@ -295,11 +296,11 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
       r.stopped_by = stop;
       checkpoint_due = true;
       if (out)
-        *out << fmt::format("sphdem: stop requested (signal {}): writing a checkpoint\n", stop)
+        *out << fmt::format("sphdem: stop requested (signal {}): writing a checkpoint{}\n", stop,
+                            sim.rebuilds_all_next_step() ? "" : " at the next rebuild of the lists")
              << std::flush;
     }
-    if (checkpoint_due && !last) {
-      sim.rebuild_all_next_step();
+    if (checkpoint_due && !last && sim.rebuilds_all_next_step()) {
       write_checkpoint();
       checkpoint_due = false;
       t_checkpoint = Clock::now();

@@ -32,8 +32,8 @@ struct RunOptions {
   // log.csv keeps its rows up to the checkpoint; hooks, log and checkpoint clocks go on
   // where they were.
   const CheckpointReader* resume = nullptr;
-  // Polled after every step: non-zero (the number of a signal) asks the run to stop
-  // after a checkpoint, written at once (run_scene returns).
+  // Polled after every step: non-zero (the number of a signal) asks the run to stop at
+  // its next checkpoint, written within 100 steps (run_scene returns).
   std::function<int()> stop_requested;
 };
 

@@ -1,7 +1,5 @@
 #include "run/step_timing.hpp"
 
-#include "analysis/watchdog.hpp"
-
 #include <omp.h>
 #include <time.h>
 
@@ -9,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <vector>
+
+#include "analysis/watchdog.hpp"
 
 namespace sphdem {
 

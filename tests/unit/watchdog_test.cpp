@@ -187,9 +187,9 @@ TEST(Watchdog, TheRunnerStopsWithTheDumpAndTheLastCheckpoint) {
   // thrown out of the box after a few checkpoints: the run passes the model's limits
   const Scene sc = load_scene_text(
       kDryBed, "t",
-      {"domain.size=[0.0016, 0.0016, 0.002]", "particles.0.max=[0.0016, 0.0016, 0.0001001]",
+      {"domain.size=[0.0016, 0.0016, 0.01]", "particles.0.max=[0.0016, 0.0016, 0.0001001]",
        "particles.0.velocity=[0, 0, 0.08]", "gravity=[0, 0, 0]", "contact.stiffness=0.05",
-       "time.end=0.1", "checkpoint.every=0.0005"});
+       "time.end=0.2", "checkpoint.every=0.0005"});
   RunOptions opt;
   opt.out_dir = dir;
   try {
