@@ -66,9 +66,13 @@ StepTiming time_steps(Simulation& sim, int steps) {
     t.one_thread_cpu = std::min(t.one_thread_cpu, thread_cpu_seconds() - c0);
   }
   omp_set_num_threads(t.threads);
-  t.cores_busy = t.threads_wall > t.one_thread_cpu;
-  if (t.cores_busy) t.step = t.one_thread_cpu * idle_thread_share(t.threads);
+  settle_step(t);
   return t;
+}
+
+void settle_step(StepTiming& t) {
+  t.cores_busy = t.threads > 1 && t.threads_wall > t.one_thread_cpu;
+  t.step = t.cores_busy ? t.one_thread_cpu * idle_thread_share(t.threads) : t.threads_wall;
 }
 
 double process_cpu_seconds() {

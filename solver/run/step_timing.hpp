@@ -23,6 +23,9 @@ struct StepTiming {
 // uses.
 double idle_thread_share(int threads);
 
+// The step on idle cores from the two timings (fills cores_busy and step).
+void settle_step(StepTiming& t);
+
 // After 3 steps unmeasured, times `steps` steps (each with the watchdog's check, as in a
 // run) on the run's threads, then (with more
 // than one) `steps` on one; advances sim by all of them.
