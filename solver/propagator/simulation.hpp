@@ -69,7 +69,7 @@ class Simulation {
   std::vector<ContactHistory::Record> contact_records() const { return dem_.contact_records(); }
   // The contact neighbour list of the last build (every pair within the skin; analysis).
   const ContactNeighbourList& contact_list() const { return dem_.contacts(); }
-  // Steps between re-sorting the owned particles into cell order (default 20; tests).
+  // Steps between re-sorting the owned particles into cell order (default 100; tests).
   // The particles are re-sorted (and every list rebuilt) every `steps` steps from now.
   void set_sort_interval(int steps) {
     sort_interval_ = steps;
