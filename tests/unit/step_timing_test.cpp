@@ -8,12 +8,21 @@
 
 using namespace sphdem;
 
-TEST(StepTiming, IdleCoresTakeTheThreadsStep) {
+namespace {
+
+StepTiming settled(int threads, double threads_wall, double one_thread_cpu) {
   StepTiming t;
-  t.threads = 2;
-  t.threads_wall = 0.006;
-  t.one_thread_cpu = 0.010;
+  t.threads = threads;
+  t.threads_wall = threads_wall;
+  t.one_thread_cpu = one_thread_cpu;
   settle_step(t);
+  return t;
+}
+
+}  // namespace
+
+TEST(StepTiming, IdleCoresTakeTheThreadsStep) {
+  const StepTiming t = settled(2, 0.006, 0.010);
   EXPECT_FALSE(t.cores_busy);
   EXPECT_EQ(t.step, 0.006);
 }
@@ -21,11 +30,7 @@ TEST(StepTiming, IdleCoresTakeTheThreadsStep) {
 // A second job on the cores: a 2-thread step 60 times one thread's CPU time (issue 35's
 // 0.34 s against ~0.0055 s) must not set the estimate.
 TEST(StepTiming, BusyCoresTakeTheOneThreadsTimeAtTheIdleShare) {
-  StepTiming t;
-  t.threads = 2;
-  t.threads_wall = 0.34;
-  t.one_thread_cpu = 0.0055;
-  settle_step(t);
+  const StepTiming t = settled(2, 0.34, 0.0055);
   EXPECT_TRUE(t.cores_busy);
   EXPECT_DOUBLE_EQ(t.step, 0.0055 * idle_thread_share(2));
   EXPECT_LT(t.step, 0.0055);
@@ -39,11 +44,7 @@ TEST(StepTiming, IdleShareFollowsAmdahl) {
 }
 
 TEST(StepTiming, OneThreadIsNeverBusy) {
-  StepTiming t;
-  t.threads = 1;
-  t.threads_wall = 0.02;
-  t.one_thread_cpu = 0.01;
-  settle_step(t);
+  const StepTiming t = settled(1, 0.02, 0.01);
   EXPECT_FALSE(t.cores_busy);
   EXPECT_EQ(t.step, 0.02);
 }
