@@ -259,6 +259,40 @@ double DemSubstepper::fluid_drag_time() const {
   return t_min;
 }
 
+const std::vector<double>& DemSubstepper::drag_gains() {
+  const DemParticles& s = s_;
+  drag_gain_.assign(s.size(), 0.0);
+  if (!p_.fluid_force || drag_c_.size() < s.n_owned) return drag_gain_;
+  for (std::size_t j = 0; j < s.n_owned; ++j) drag_gain_[j] = drag_c_[j] * s.eps[j];
+  halo_.fill(drag_gain_);
+  return drag_gain_;
+}
+
+void DemSubstepper::add_impulses(const double* impulse) {
+  DemParticles& s = s_;
+  const long n = static_cast<long>(s.n_owned);
+  for (long j = 0; j < n; ++j) {
+    if (s.rigid_group[j] >= 0) continue;  // below: the group's share
+    const double inv_m = 1.0 / s.mass[j];
+    s.vx[j] += impulse[3 * j] * inv_m;
+    s.vy[j] += impulse[3 * j + 1] * inv_m;
+    s.vz[j] += impulse[3 * j + 2] * inv_m;
+  }
+  if (n_groups_ == 0) return;
+  sum_over_rigid_groups([&](long j, double& jx, double& jy, double& jz) {
+    jx = impulse[3 * j];
+    jy = impulse[3 * j + 1];
+    jz = impulse[3 * j + 2];
+  });
+  for (long j = 0; j < n; ++j) {
+    const int gr = s.rigid_group[j];
+    if (gr < 0) continue;
+    s.vx[j] += group_fx_[gr] / group_m_[gr];
+    s.vy[j] += group_fy_[gr] / group_m_[gr];
+    s.vz[j] += group_fz_[gr] / group_m_[gr];
+  }
+}
+
 // Rigid groups share their total force equally (thesis §4.5).
 void DemSubstepper::forces(bool accumulate_mean, double weight, double dt_springs) {
   forces_advancing(accumulate_mean, weight, dt_springs, Advance{});

@@ -59,8 +59,16 @@ class DemSubstepper {
   // fluid held over a step, and the fluid getting the impulse back, multiply their slip by
   // 1 - (1 + r)(1 - exp(-dt rate)), which stays in [0, 1) (no overshoot) for
   // dt <= ln(1 + 1/r) / rate. The smallest such dt over the spheres of the last force pass
-  // (infinity without drag): a bound on the SPH step.
+  // (infinity without drag): what an explicit exchange would need; `check` prints it (the
+  // solver's exchange is semi-implicit, coupling/drag_exchange.hpp).
   double fluid_drag_time() const;
+  // d f_j / d u_f = c_j eps_j (2.68, 2.74) of every sphere, owned and halo images, at the
+  // last force pass (0 before the first and without fluid): the gains of the drag
+  // exchange (coupling/drag_exchange.hpp).
+  const std::vector<double>& drag_gains();
+  // Adds impulse (three values per owned sphere) to the owned spheres' velocities; a
+  // rigid group takes the sum of its members' over its mass.
+  void add_impulses(const double* impulse);
   int substeps() const { return substeps_; }  // per SPH step
   const MultirateTally& multirate_tally() const { return tally_; }
   // Sphere halo and contact list builds so far: a list into the halo is stale once it changes.
@@ -168,6 +176,7 @@ class DemSubstepper {
   std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
   int n_groups_ = 0;
   double dt_ = 0;
+  std::vector<double> drag_gain_;
   double drag_rate_max_ = 0;  // sets the next half step's sub-step with dt_max
   // a bound on every sphere's displacement since the last list build: the largest
   // displacement when last measured plus the largest step of each sub-step since (the

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "coupling/drag_exchange.hpp"
 #include "coupling/interpolation.hpp"
 #include "coupling/pressure_coupling.hpp"
 #include "coupling/reaction.hpp"
@@ -368,7 +369,7 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   }
   const PeriodicHalo& sphere_halo = dem_.halo();
   for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard}) sphere_halo.fill(*v);
-  add_reaction_on_fluid(f, s, sphere_pairs_, sphere_scratch_);
+  add_reaction_on_fluid(f, s, sphere_pairs_, sphere_scratch_, dem_.drag_gains().data());
   lap(PassTimers::kReaction);
 }
 
@@ -405,7 +406,9 @@ void Simulation::step() {
 //   3. neighbours at n+1/2; voidage -> density rate -> h, P -> theta -> interpolation
 //      at spheres -> reaction of the spheres' mean force on the fluid
 //   4. corrector: u^{n+1} = u^n + dt a^{n+1/2}, x^{n+1} = x^{n+1/2} + dt/2 u^{n+1},
-//      rho^{n+1} = rho^n (2 - e)/(2 + e), e = -dt drho/rho
+//      rho^{n+1} = rho^n (2 - e)/(2 + e), e = -dt drho/rho; where the drag pulls the
+//      fluid faster than dt allows, a divided by 1 + dt K' and the rest of the impulse
+//      given to the spheres (coupling/drag_exchange.hpp)
 //   5. DEM sub-steps over the second half with the new fluid fields; next dt (CFL)
 void Simulation::advance(bool hold_spheres) {
   FluidParticles& f = fluid_;
@@ -444,17 +447,34 @@ void Simulation::advance(bool hold_spheres) {
   lap(PassTimers::kDem);
   compute_fluid_side(hold_spheres);
   lap.restart();  // compute_fluid_side timed its own passes
-#pragma omp parallel for schedule(static)
+  drag_phi_.resize(3 * n);
+  bool exchange = false;
+#pragma omp parallel for schedule(static) reduction(|| : exchange)
   for (long a = 0; a < n; ++a) {
+    const double volume = f.mass[a] / f.rho[a];  // at n+1/2, as the reaction's
     const double e = -dt * f.drho[a] / f.rho[a];
     f.rho[a] = rho0_[a] * (2.0 - e) / (2.0 + e);
-    if (f.kind[a] != kFluid) continue;
+    double* phi = drag_phi_.data() + 3 * a;
+    if (f.kind[a] != kFluid) {
+      phi[0] = phi[1] = phi[2] = 0.0;
+      continue;
+    }
+    // the semi-implicit drag exchange: the acceleration the fluid takes, also the next
+    // predictor's (coupling/drag_exchange.hpp)
+    if (take_drag_exchange(dt, f.drag_rate[a], volume, f.ax[a], f.ay[a], f.az[a], phi))
+      exchange = true;
     f.vx[a] = u0x_[a] + dt * f.ax[a];
     f.vy[a] = u0y_[a] + dt * f.ay[a];
     f.vz[a] = u0z_[a] + dt * f.az[a];
     f.x[a] += 0.5 * dt * f.vx[a];
     f.y[a] += 0.5 * dt * f.vy[a];
     f.z[a] += 0.5 * dt * f.vz[a];
+  }
+  if (exchange && !hold_spheres) {  // what the fluid did not take goes to the spheres
+    DemParticles& s = dem_.spheres();
+    drag_exchange_impulses(s, dem_.drag_gains().data(), sphere_pairs_, dem_.halo(),
+                           drag_phi_.data(), f.n_owned, dt, sphere_scratch_, drag_impulse_);
+    dem_.add_impulses(drag_impulse_.data());
   }
   lap(PassTimers::kIntegrate);
   if (!hold_spheres) dem_.half_step(dt, /*first_half=*/false);
@@ -482,7 +502,6 @@ void Simulation::next_dt() {
     const double acc = std::sqrt(f.ax[a] * f.ax[a] + f.ay[a] * f.ay[a] + f.az[a] * f.az[a]);
     if (acc > 0) dt = std::min(dt, 0.25 * std::sqrt(f.h[a] / acc));  // force
   }
-  dt = std::min(dt, p.fluid_drag_fraction * dem_.fluid_drag_time());  // the explicit drag
   dt_sph_ = dt;
 }
 

@@ -45,7 +45,6 @@ class Simulation {
   double dt_sph() const { return dt_sph_; }
   double dt_dem() const { return dem_.dt(); }
   double dt_dem_max() const { return params_.dem.dt_max; }
-  double fluid_drag_fraction() const { return params_.fluid.fluid_drag_fraction; }
   int dem_substeps() const { return dem_.substeps(); }
   const MultirateTally& multirate_tally() const { return dem_.multirate_tally(); }
   double contact_time() const { return params_.dem.contact_time; }
@@ -138,7 +137,8 @@ class Simulation {
   BigSphereFraction big_fraction_;
   std::vector<double> big_solid_, big_solid_over_d_;
   PairAccumulator sphere_scratch_;
-  std::vector<double> u0x_, u0y_, u0z_, rho0_;  // state at the start of a step
+  std::vector<double> u0x_, u0y_, u0z_, rho0_;   // state at the start of a step
+  std::vector<double> drag_phi_, drag_impulse_;  // the drag exchange's phi_a and J_j
   double time_ = 0, dt_sph_ = 0;
   double cell_size_ = 0;
   int sort_interval_ = 100;  // steps between re-sorts (bench/RESULTS.md, session 25)

@@ -24,13 +24,10 @@ struct FluidStepParams {
   MomentumParams momentum;         // mu, alpha, cfl (2.55-2.57, 3.5)
   double kinematic_viscosity = 0;  // nu = mu / rho_f, the viscous time-step limit
   double max_dt = 0;               // cap of dt_SPH
-  // dt_SPH <= this fraction of the time in which the fluid's drag exchange with the
-  // spheres stops overshooting (DemSubstepper::fluid_drag_time; margin in VALIDATION.md)
-  double fluid_drag_fraction = 0.5;
-  int relax_steps = 0;         // start-up: fluid steps with the spheres held
-  double relax_damping = 0;    // fraction of the fluid velocity removed per such step
-  HydrostaticPressure split;   // split off by the variational coupling (zero without)
-  DensityDiffusion diffusion;  // delta-SPH (off unless fluid.density_diffusion > 0)
+  int relax_steps = 0;             // start-up: fluid steps with the spheres held
+  double relax_damping = 0;        // fraction of the fluid velocity removed per such step
+  HydrostaticPressure split;       // split off by the variational coupling (zero without)
+  DensityDiffusion diffusion;      // delta-SPH (off unless fluid.density_diffusion > 0)
 };
 
 struct CouplingParams {

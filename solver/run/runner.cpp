@@ -14,6 +14,7 @@
 #include "analysis/neighbourhood_dump.hpp"
 #include "analysis/sediment_output.hpp"
 #include "analysis/watchdog.hpp"
+#include "coupling/drag_exchange.hpp"
 #include "io/checkpoint_file.hpp"
 #include "propagator/simulation.hpp"
 #include "run/checkpoints.hpp"
@@ -492,15 +493,16 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
   if (sc.contact.rolling.model == RollingParams::Model::kEpsd)
     s += fmt::format("rolling          epsd: mu_r = {}, eta_r = {}\n", sc.contact.rolling.friction,
                      sc.contact.rolling.damping_ratio);
-  const double drag_exchange = sim.fluid_drag_fraction() * sim.dem().fluid_drag_time();
+  // explicit, the fluid's drag exchange would bound the step (DemSubstepper::fluid_drag_time)
+  const double drag_exchange = kExplicitDragLimit * sim.dem().fluid_drag_time();
   s += fmt::format(
       "time steps       dt_SPH = {:.4g} s (CFL {}{}), dt_DEM = {:.4g} s, {} DEM sub-steps per "
       "SPH step (more where the spheres' drag relaxes them faster: 0.1 m/(c eps) at run time)\n",
       dt, sc.time.cfl,
-      drag_exchange <= dt * (1 + 1e-12)
-          ? "; bound by the fluid's drag exchange with the spheres, " +
-                fmt::format("{} ln(1 + 1/r) m/(c eps) at r = (1 - eps) rho_p / (eps rho_f)",
-                            sim.fluid_drag_fraction())
+      drag_exchange < dt
+          ? fmt::format("; the fluid's drag exchange with the spheres semi-implicit, explicit it "
+                        "would need dt <= {:.3g} s (coupling/drag_exchange.hpp)",
+                        drag_exchange)
           : "",
       sub > 0 ? dt / sub : 0.0, sub);
   s += fmt::format(

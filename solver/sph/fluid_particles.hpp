@@ -30,6 +30,8 @@ struct FluidParticles {
   std::vector<double> thx, thy, thz;  // pressure + viscous acceleration theta, eq. 2.70
   std::vector<double> ax, ay, az;     // total acceleration used by the integrator
   std::vector<double> dt_limit;       // CFL time-step limit per particle, eq. 3.5
+  std::vector<double>
+      drag_rate;  // K_a, the reaction's relaxation rate (coupling/drag_exchange.hpp)
   std::vector<double> diffusion_psi, diffusion_volume;  // sph/density_diffusion.hpp (if on)
 
   std::size_t n_owned = 0;
@@ -37,7 +39,7 @@ struct FluidParticles {
 
   // The field registry: every per-particle array with its name and role
   // (domain/field_info.hpp), for checkpoints, halos, resizing and reordering.
-  static constexpr int kFieldCount = 29;
+  static constexpr int kFieldCount = 30;
   template <class F>
   void for_each_field(F&& f) {
     visit_fields(*this, f);
@@ -81,6 +83,7 @@ struct FluidParticles {
     f(FieldInfo{"ay", kState}, p.ay);
     f(FieldInfo{"az", kState}, p.az);
     f(FieldInfo{"dt_limit", kScratch}, p.dt_limit);
+    f(FieldInfo{"drag_rate", kScratch}, p.drag_rate);
     f(FieldInfo{"diffusion_psi", kHaloAfterPass}, p.diffusion_psi);
     f(FieldInfo{"diffusion_volume", kHaloAfterPass}, p.diffusion_volume);
   }

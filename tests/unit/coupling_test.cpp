@@ -9,6 +9,7 @@
 #include <random>
 #include <utility>
 
+#include "coupling/drag_exchange.hpp"
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "coupling/interpolation.hpp"
 #include "coupling/pressure_coupling.hpp"
@@ -152,6 +153,83 @@ TEST(Coupling, ActionAndReactionCancelToRoundOff) {
     }
     for (int d = 0; d < 3; ++d)
       EXPECT_LT(std::abs(rsum[d] + fsum[d]), 1e-13 * fabs_sum) << "axis " << d;
+  }
+}
+
+// The drag rate K_a (coupling/reaction.hpp) is the reaction's pull per unit fluid velocity:
+// with every sphere's mean force g_j u (a uniform slip u), the reaction is -K_a u to
+// round-off. Then the semi-implicit exchange (coupling/drag_exchange.hpp) at steps from
+// the explicit limit to 40 times it: the momentum the fluid does not take is what the
+// spheres get, to round-off. Both are conservation checks, true of any weights shared by
+// the passes; the physics is held by the extremes' fine_20um rows (the bulk's slip against
+// (4.4) at a step past the explicit limit).
+TEST(Coupling, DragExchangeKeepsTheMomentumExact) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    Config c;
+    build(c, 25, seed, 0.1, seed == 3u ? 1.5 : 1.0, seed == 3u ? 1.0 : 0.0);
+    FluidParticles& f = c.f;
+    DemParticles& s = c.s;
+    interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
+    std::mt19937 rng(seed + 200);
+    std::uniform_real_distribution<double> u(0.5, 1.5);
+    std::vector<double> gain(s.size(), 0.0);
+    const double slip[3] = {1e-3, -2e-3, 3e-3};
+    for (std::size_t j = 0; j < s.n_owned; ++j) {
+      gain[j] = 1e-6 * u(rng);
+      s.fmx[j] = gain[j] * slip[0];
+      s.fmy[j] = gain[j] * slip[1];
+      s.fmz[j] = gain[j] * slip[2];
+    }
+    for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard, &gain}) c.sh.fill(*v);
+    std::fill(f.ax.begin(), f.ax.end(), 0.0);
+    std::fill(f.ay.begin(), f.ay.end(), 0.0);
+    std::fill(f.az.begin(), f.az.end(), 0.0);
+    add_reaction_on_fluid(f, s, c.pairs, c.scratch, gain.data());
+    double k_max = 0;
+    for (std::size_t a = 0; a < f.n_owned; ++a) {
+      const double k = f.drag_rate[a];
+      if (f.kind[a] == kWall) EXPECT_EQ(k, 0.0);
+      k_max = std::max(k_max, k);
+      EXPECT_NEAR(f.ax[a], -k * slip[0], 1e-12 * k_max * 3e-3 + 1e-300);
+      EXPECT_NEAR(f.ay[a], -k * slip[1], 1e-12 * k_max * 3e-3 + 1e-300);
+      EXPECT_NEAR(f.az[a], -k * slip[2], 1e-12 * k_max * 3e-3 + 1e-300);
+    }
+    ASSERT_GT(k_max, 0.0);
+    std::uniform_real_distribution<double> a_rand(-1.0, 1.0);
+    std::vector<double> a0(3 * f.n_owned);
+    for (double& v : a0) v = a_rand(rng);
+    for (double dt_k : {kExplicitDragLimit, 4.0, 40.0}) {  // dt K at the fastest particle
+      const double dt = dt_k / k_max;
+      std::vector<double> phi(3 * f.n_owned, 0.0), impulse;
+      double deficit[3] = {0, 0, 0}, scale = 0, withheld = 0;
+      long implicit = 0;
+      for (std::size_t a = 0; a < f.n_owned; ++a) {
+        if (f.kind[a] == kWall) continue;
+        double ax = a0[3 * a], ay = a0[3 * a + 1], az = a0[3 * a + 2];
+        implicit += take_drag_exchange(dt, f.drag_rate[a], f.mass[a] / f.rho[a], ax, ay, az,
+                                       phi.data() + 3 * a);
+        deficit[0] += f.mass[a] * dt * (a0[3 * a] - ax);
+        deficit[1] += f.mass[a] * dt * (a0[3 * a + 1] - ay);
+        deficit[2] += f.mass[a] * dt * (a0[3 * a + 2] - az);
+        scale += f.mass[a] * dt *
+                 (std::abs(a0[3 * a]) + std::abs(a0[3 * a + 1]) + std::abs(a0[3 * a + 2]));
+        withheld += f.mass[a] * dt *
+                    (std::abs(a0[3 * a] - ax) + std::abs(a0[3 * a + 1] - ay) +
+                     std::abs(a0[3 * a + 2] - az));
+      }
+      drag_exchange_impulses(s, gain.data(), c.pairs, c.sh, phi.data(), f.n_owned, dt, c.scratch,
+                             impulse);
+      double given[3] = {0, 0, 0};
+      for (std::size_t j = 0; j < s.n_owned; ++j)
+        for (int d = 0; d < 3; ++d) given[d] += impulse[3 * j + d];
+      if (dt_k == kExplicitDragLimit)
+        EXPECT_EQ(implicit, 0);  // explicit up to the limit
+      else
+        EXPECT_GT(implicit, 0);
+      for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(given[d], deficit[d], 1e-13 * scale) << "dt K " << dt_k << ", axis " << d;
+      if (dt_k == 40.0) EXPECT_GT(withheld, 0.1 * scale);  // not a trivial zero
+    }
   }
 }
 
@@ -475,7 +553,7 @@ TEST(Coupling, PairPassesMatchBruteForceWithEitherInstructionSet) {
       c.pairs.evaluate(f, s, true, isa);
       compute_fluid_voidage(f, s, c.pairs, 0.0);
       for (std::size_t a = 0; a < f.n_owned; ++a) f.ax[a] = f.ay[a] = f.az[a] = 0.0;
-      add_reaction_on_fluid(f, s, c.pairs, c.scratch, isa);
+      add_reaction_on_fluid(f, s, c.pairs, c.scratch, nullptr, isa);
       std::size_t pairs_seen = 0;
       for (std::size_t a = 0; a < f.n_owned; ++a) {
         const double inv_h = c.pairs.inv_kernel_h(f, a), H = 1.0 / inv_h;
