@@ -130,13 +130,7 @@ void DemSubstepper::switch_pressure_force() {
     fy = V * (s.gy[j] - g_old_y_[j]);
     fz = V * (s.gz[j] - g_old_z_[j]);
   });
-  for (long j = 0; j < n; ++j) {
-    const int gr = s.rigid_group[j];
-    if (gr < 0) continue;
-    s.ax[j] += group_fx_[gr] / group_m_[gr];
-    s.ay[j] += group_fy_[gr] / group_m_[gr];
-    s.az[j] += group_fz_[gr] / group_m_[gr];
-  }
+  add_group_shares(s.ax, s.ay, s.az);
 }
 
 // One pass over the owned spheres, in blocks that stay in the cache: the block's fluid
@@ -284,12 +278,18 @@ void DemSubstepper::add_impulses(const double* impulse) {
     jy = impulse[3 * j + 1];
     jz = impulse[3 * j + 2];
   });
-  for (long j = 0; j < n; ++j) {
+  add_group_shares(s.vx, s.vy, s.vz);
+}
+
+void DemSubstepper::add_group_shares(std::vector<double>& x, std::vector<double>& y,
+                                     std::vector<double>& z) const {
+  const DemParticles& s = s_;
+  for (std::size_t j = 0; j < s.n_owned; ++j) {
     const int gr = s.rigid_group[j];
     if (gr < 0) continue;
-    s.vx[j] += group_fx_[gr] / group_m_[gr];
-    s.vy[j] += group_fy_[gr] / group_m_[gr];
-    s.vz[j] += group_fz_[gr] / group_m_[gr];
+    x[j] += group_fx_[gr] / group_m_[gr];
+    y[j] += group_fy_[gr] / group_m_[gr];
+    z[j] += group_fz_[gr] / group_m_[gr];
   }
 }
 

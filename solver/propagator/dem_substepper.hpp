@@ -107,6 +107,9 @@ class DemSubstepper {
  private:
   template <class Force>
   void sum_over_rigid_groups(Force force);
+  // Adds each rigid group's summed value over its mass to (x, y, z) of its members.
+  void add_group_shares(std::vector<double>& x, std::vector<double>& y,
+                        std::vector<double>& z) const;
   // The cost of a sphere in its force pass, in contact-list entries: each thread takes
   // the spheres of one equal share (domain/row_partition.hpp) in every pass of a sub-step.
   double row_cost() const { return kContactRowCost + (p_.fluid_force ? kDragRowCost : 0.0); }

@@ -202,7 +202,7 @@ std::vector<Row> rows() {
     row.hindered = true;
     r.push_back(row);
   }
-  // fine particles: 20 um in a packed bed, the SPH step bound by the fluid's drag exchange
+  // fine particles: 20 um in a packed bed, where an explicit drag exchange would bind the step
   {
     BedScene b;
     b.d = 2e-5, b.rho_p = 2650, b.dx = 4e-5, b.w = 4e-4, b.H = 8e-4, b.top = 3e-4;

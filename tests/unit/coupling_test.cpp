@@ -188,11 +188,13 @@ TEST(Coupling, DragExchangeKeepsTheMomentumExact) {
     double k_max = 0;
     for (std::size_t a = 0; a < f.n_owned; ++a) {
       const double k = f.drag_rate[a];
-      if (f.kind[a] == kWall) EXPECT_EQ(k, 0.0);
+      if (f.kind[a] == kWall) {
+        EXPECT_EQ(k, 0.0);
+      }
       k_max = std::max(k_max, k);
-      EXPECT_NEAR(f.ax[a], -k * slip[0], 1e-12 * k_max * 3e-3 + 1e-300);
-      EXPECT_NEAR(f.ay[a], -k * slip[1], 1e-12 * k_max * 3e-3 + 1e-300);
-      EXPECT_NEAR(f.az[a], -k * slip[2], 1e-12 * k_max * 3e-3 + 1e-300);
+      EXPECT_NEAR(f.ax[a], -k * slip[0], 1e-12 * k * 3e-3);
+      EXPECT_NEAR(f.ay[a], -k * slip[1], 1e-12 * k * 3e-3);
+      EXPECT_NEAR(f.az[a], -k * slip[2], 1e-12 * k * 3e-3);
     }
     ASSERT_GT(k_max, 0.0);
     std::uniform_real_distribution<double> a_rand(-1.0, 1.0);
@@ -222,13 +224,16 @@ TEST(Coupling, DragExchangeKeepsTheMomentumExact) {
       double given[3] = {0, 0, 0};
       for (std::size_t j = 0; j < s.n_owned; ++j)
         for (int d = 0; d < 3; ++d) given[d] += impulse[3 * j + d];
-      if (dt_k == kExplicitDragLimit)
+      if (dt_k == kExplicitDragLimit) {
         EXPECT_EQ(implicit, 0);  // explicit up to the limit
-      else
+      } else {
         EXPECT_GT(implicit, 0);
+      }
       for (int d = 0; d < 3; ++d)
         EXPECT_NEAR(given[d], deficit[d], 1e-13 * scale) << "dt K " << dt_k << ", axis " << d;
-      if (dt_k == 40.0) EXPECT_GT(withheld, 0.1 * scale);  // not a trivial zero
+      if (dt_k == 40.0) {
+        EXPECT_GT(withheld, 0.1 * scale);  // not a trivial zero
+      }
     }
   }
 }
