@@ -253,7 +253,7 @@ double DemSubstepper::fluid_drag_time() const {
   return t_min;
 }
 
-const std::vector<double>& DemSubstepper::drag_gains() {
+const std::vector<double>& DemSubstepper::update_drag_gains() {
   const DemParticles& s = s_;
   drag_gain_.assign(s.size(), 0.0);
   if (!p_.fluid_force || drag_c_.size() < s.n_owned) return drag_gain_;

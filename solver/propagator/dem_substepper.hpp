@@ -64,8 +64,9 @@ class DemSubstepper {
   double fluid_drag_time() const;
   // d f_j / d u_f = c_j eps_j (2.68, 2.74) of every sphere, owned and halo images, at the
   // last force pass (0 before the first and without fluid): the gains of the drag
-  // exchange (coupling/drag_exchange.hpp).
-  const std::vector<double>& drag_gains();
+  // exchange (coupling/drag_exchange.hpp); update_drag_gains() computes them.
+  const std::vector<double>& update_drag_gains();
+  const std::vector<double>& drag_gains() const { return drag_gain_; }
   // Adds impulse (three values per owned sphere) to the owned spheres' velocities; a
   // rigid group takes the sum of its members' over its mass.
   void add_impulses(const double* impulse);

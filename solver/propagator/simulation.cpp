@@ -369,7 +369,7 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   }
   const PeriodicHalo& sphere_halo = dem_.halo();
   for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard}) sphere_halo.fill(*v);
-  add_reaction_on_fluid(f, s, sphere_pairs_, sphere_scratch_, dem_.drag_gains().data());
+  add_reaction_on_fluid(f, s, sphere_pairs_, sphere_scratch_, dem_.update_drag_gains().data());
   lap(PassTimers::kReaction);
 }
 
