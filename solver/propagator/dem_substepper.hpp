@@ -44,6 +44,8 @@ class DemSubstepper {
   DemParticles& spheres() { return s_; }
   const DemParticles& spheres() const { return s_; }
   const DemStepParams& params() const { return p_; }
+  // time.multirate on or off from the next half step (step_timing times steps without it).
+  void set_multirate(bool on) { p_.multirate = on; }
   const PeriodicHalo& halo() const { return halo_; }
   const ContactNeighbourList& contacts() const { return contacts_; }
   const ContactHistory& contact_history() const { return history_; }

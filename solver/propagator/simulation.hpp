@@ -47,6 +47,8 @@ class Simulation {
   double dt_dem_max() const { return params_.dem.dt_max; }
   int dem_substeps() const { return dem_.substeps(); }
   const MultirateTally& multirate_tally() const { return dem_.multirate_tally(); }
+  bool multirate() const { return dem_.params().multirate; }
+  void set_multirate(bool on) { dem_.set_multirate(on); }
   double contact_time() const { return params_.dem.contact_time; }
   const Scene& scene() const { return scene_; }
   const StepParams& params() const { return params_; }
