@@ -5,8 +5,9 @@
 //   K_a = (1/rho_a) sum_j (g_j / S_j) W_aj,   g_j = c_j eps_j = d f_j / d u_f (2.68, 2.74)
 // (coupling/reaction.hpp). Taken explicitly the fluid's slip overshoots once dt K_a
 // passes 1; in a bed of fine grains, where the fluid is a small mass between heavy
-// spheres, that is the shortest time scale of the run. Up to dt K_a = theta the
-// corrector stays explicit; beyond it, backward Euler in the excess K'_a = K_a - theta/dt:
+// spheres, that is the shortest time scale of the run. Up to dt K_a = theta
+// (kExplicitDragLimit) the corrector stays explicit; beyond it, backward Euler in the
+// excess K'_a = K_a - theta/dt:
 //   du_a = dt a_a / (1 + dt K'_a)
 // which keeps the steady slip of any dt (du = 0 where a = 0: Darcy's law through a bed).
 // The momentum the fluid did not take, D_a = m_a dt K'_a du_a, goes to the spheres as a
