@@ -10,15 +10,21 @@
 //   density_rate, momentum   the fluid pairs (half list, with its skin)
 // Run: OMP_NUM_THREADS=2 build/bench/step_profile cases/sand_column.yaml [STEPS [WARMUP]]
 //      [key=value ...] [sort=STEPS: re-sort every STEPS steps after the warm-up]
+//      [resume=RUN_DIR: from the run's newest checkpoint (its scene, the overrides on top),
+//      without relaxation: the step as a run has it later, a sediment in it]
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "io/checkpoint_file.hpp"
 #include "propagator/simulation.hpp"
+#include "run/checkpoints.hpp"
 #include "scene/scene.hpp"
 
 using namespace sphdem;
@@ -30,11 +36,14 @@ int main(int argc, char** argv) {
   }
   int steps = 50, warmup = 10, sort_interval = 0;
   std::vector<std::string> overrides;
+  std::string resume_dir;
   int positional = 0;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a.rfind("sort=", 0) == 0)
       sort_interval = std::atoi(a.c_str() + 5);
+    else if (a.rfind("resume=", 0) == 0)
+      resume_dir = a.substr(7);
     else if (a.find('=') != std::string::npos)
       overrides.push_back(a);
     else if (positional++ == 0)
@@ -43,9 +52,20 @@ int main(int argc, char** argv) {
       warmup = std::atoi(argv[i]);
   }
   const auto t0 = std::chrono::steady_clock::now();
-  Simulation sim(load_scene(argv[1], overrides));
+  std::unique_ptr<Simulation> made;
+  if (resume_dir.empty()) {
+    made = std::make_unique<Simulation>(load_scene(argv[1], overrides));
+  } else {
+    const CheckpointStore::Found found = CheckpointStore::newest_valid(resume_dir);
+    const CheckpointReader& ckpt = *found.reader;
+    made = std::make_unique<Simulation>(
+        load_scene_text(ckpt.text("scene/yaml"), ckpt.path(), overrides), ckpt);
+    std::printf("# from %s: t = %.6g s, step %ld\n", ckpt.path().c_str(), made->time(),
+                static_cast<long>(made->step_count()));
+  }
+  Simulation& sim = *made;
   const auto t1 = std::chrono::steady_clock::now();
-  sim.relax();
+  if (resume_dir.empty()) sim.relax();
   for (int k = 0; k < warmup; ++k) sim.step();
   if (sort_interval > 0) sim.set_sort_interval(sort_interval);  // after the first sorts
   const PassTimers before = sim.timers();
@@ -95,5 +115,27 @@ int main(int argc, char** argv) {
     else
       std::printf("%22s\n", "-");
   }
+  // what bounds the step: the particle with the smallest CFL bound (3.5) and the clear
+  // liquid's and the suspension's smoothing lengths
+  const FluidParticles& f = sim.fluid();
+  std::size_t worst = 0;
+  double h_clear = 0, n_clear = 0, h_mix = 0, n_mix = 0, cs_max = 0;
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    if (f.kind[a] != kFluid) continue;
+    if (f.dt_limit[a] < f.dt_limit[worst]) worst = a;
+    cs_max = std::max(cs_max, f.cs[a]);
+    if (f.eps[a] > 0.999)
+      h_clear += f.h[a], ++n_clear;
+    else
+      h_mix += f.h[a], ++n_mix;
+  }
+  const double cfl = sim.scene().time.cfl;
+  std::printf(
+      "# dt_SPH %.4g s; smallest CFL bound %.4g s at z = %.4g m: h %.4g m, eps %.3f, cs %.4g "
+      "m/s, v_sig %.4g m/s; largest cs %.4g; mean h: clear liquid %.4g m (%g), with spheres "
+      "%.4g m (%g)\n",
+      sim.dt_sph(), f.dt_limit[worst], f.z[worst], f.h[worst], f.eps[worst], f.cs[worst],
+      cfl * f.h[worst] / f.dt_limit[worst], cs_max, h_clear / std::max(n_clear, 1.0), n_clear,
+      h_mix / std::max(n_mix, 1.0), n_mix);
   return 0;
 }

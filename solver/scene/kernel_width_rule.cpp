@@ -8,19 +8,25 @@
 
 namespace sphdem {
 
-double terminal_speed(const drag::DragLaw& law, double d, double rho_p, double rho_f, double mu,
-                      double g) {
+double settling_speed(const drag::DragLaw& law, double d, double rho_p, double rho_f, double mu,
+                      double g, double eps) {
   if (std::holds_alternative<drag::NoDrag>(law)) return HUGE_VAL;  // nothing holds it back
-  const double weight = std::abs(rho_p - rho_f) * g * M_PI * d * d * d / 6.0;
+  // the buoyant weight less the suspension's buoyancy, (rho_p - rho_av) V g (4.2-4.4)
+  const double weight = eps * std::abs(rho_p - rho_f) * g * M_PI * d * d * d / 6.0;
   const drag::Fluid fluid{rho_f, mu};
   double lo = 0.0, hi = std::max(10.0 * weight / (3.0 * M_PI * mu * d), 1e-12);  // 10 x Stokes
   for (int k = 0; k < 200; ++k) {  // the drag grows with the slip
     const double v = 0.5 * (lo + hi);
     const double force =
-        std::visit([&](const auto& l) { return l.coefficient(1.0, v, d, fluid); }, law) * v;
+        std::visit([&](const auto& l) { return l.coefficient(eps, v, d, fluid); }, law) * v;
     (force > weight ? hi : lo) = v;
   }
   return 0.5 * (lo + hi);
+}
+
+double terminal_speed(const drag::DragLaw& law, double d, double rho_p, double rho_f, double mu,
+                      double g) {
+  return settling_speed(law, d, rho_p, rho_f, mu, g, 1.0);
 }
 
 double extra_drag_ratio(const Scene& sc) {

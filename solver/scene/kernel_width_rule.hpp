@@ -26,6 +26,11 @@ struct KernelWidthChoice {
   std::string reason;       // what was chosen and why, for `sphdem check`
 };
 
+// The slip at which the drag law carries a sphere's weight in a uniform suspension at
+// voidage eps (4.2-4.4): the hindered settling speed, the Kynch interface's (4.6).
+double settling_speed(const drag::DragLaw& law, double d, double rho_p, double rho_f, double mu,
+                      double g, double eps);
+
 // The drag law's terminal speed of a sphere (d, rho_p) alone in the fluid (eps = 1).
 double terminal_speed(const drag::DragLaw& law, double d, double rho_p, double rho_f, double mu,
                       double g);
