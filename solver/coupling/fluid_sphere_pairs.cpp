@@ -31,11 +31,22 @@ void fresh_size(std::vector<T>& v, std::size_t n) {
 
 void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_cells,
                                   double kernel_scale, double rc, double drag_kernel_scale) {
+  list.build(dem_cells, f.x.data(), f.y.data(), f.z.data(), f.n_owned, rc, false);
+  size_for_list(f, kernel_scale, drag_kernel_scale);
+}
+
+void FluidSpherePairs::build_list(const FluidParticles& f, const CellList& dem_cells,
+                                  double kernel_scale, const double* rc, double drag_kernel_scale) {
+  list.build_within(dem_cells, f.x.data(), f.y.data(), f.z.data(), f.n_owned, rc);
+  size_for_list(f, kernel_scale, drag_kernel_scale);
+}
+
+void FluidSpherePairs::size_for_list(const FluidParticles& f, double kernel_scale,
+                                     double drag_kernel_scale) {
   scale = kernel_scale;
   drag_scale = drag_kernel_scale > 0.0 ? drag_kernel_scale : kernel_scale;
   if (drag_scale > scale)
     throw std::invalid_argument("FluidSpherePairs: the drag's kernel reaches beyond the pairs'");
-  list.build(dem_cells, f.x.data(), f.y.data(), f.z.data(), f.n_owned, rc, false);
   const std::size_t n = list.neighbour.size();
   fresh_size(sphere, n);
   fresh_size(w, n);

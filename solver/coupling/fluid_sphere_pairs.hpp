@@ -64,6 +64,10 @@ struct FluidSpherePairs {
   // <= kernel_scale (0: the same).
   void build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale,
                   double rc, double drag_kernel_scale = 0.0);
+  // The same with each particle's own cut-off rc[a] >= 2 scale h_a (the solver's: its own
+  // h's support and the skin).
+  void build_list(const FluidParticles& f, const CellList& dem_cells, double kernel_scale,
+                  const double* rc, double drag_kernel_scale = 0.0);
   // Kernel values and row sums at the current positions (every step); the gradient
   // factors only with_gradient (the variational pressure coupling reads them).
   void evaluate(const FluidParticles& f, const DemParticles& s, bool with_gradient = true,
@@ -74,6 +78,9 @@ struct FluidSpherePairs {
     build_list(f, dem_cells, kernel_scale, dem_cells.max_cutoff(), drag_kernel_scale);
     evaluate(f, s);
   }
+
+ private:
+  void size_for_list(const FluidParticles& f, double kernel_scale, double drag_kernel_scale);
 };
 
 }  // namespace sphdem

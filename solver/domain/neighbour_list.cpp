@@ -4,6 +4,9 @@
 #include <immintrin.h>
 #endif
 
+#include <algorithm>
+#include <cmath>
+
 #include "sph/pair_isa.hpp"
 
 namespace sphdem {
@@ -77,6 +80,33 @@ void NeighbourList::build(const CellList& cells, const double* x, const double* 
                              [&](std::uint32_t j, double, double, double, double) {
                                if (half ? (j > i || j >= n_query) : !(exclude_self && j == i))
                                  out.push_back(j);
+                             });
+  });
+}
+
+void NeighbourList::build_within(const CellList& cells, const double* x, const double* y,
+                                 const double* z, std::size_t n_query, const double* rc) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (best_pair_isa() == PairIsa::kAvx512) {
+    rows_.build(n_query, offset, neighbour, [&](std::size_t i, std::vector<std::uint32_t>& out) {
+      append_within_avx512(cells, x[i], y[i], z[i], rc[i] * rc[i], out);
+    });
+    return;
+  }
+#endif
+  rows_.build(n_query, offset, neighbour, [&](std::size_t i, std::vector<std::uint32_t>& out) {
+    append_within(cells, x[i], y[i], z[i], rc[i] * rc[i], out);
+  });
+}
+
+void NeighbourList::build_half_within(const CellList& cells, const double* x, const double* y,
+                                      const double* z, std::size_t n_query, const double* reach) {
+  rows_.build(n_query, offset, neighbour, [&](std::size_t i, std::vector<std::uint32_t>& out) {
+    const double ri = reach[i];
+    cells.for_each_neighbour(x[i], y[i], z[i], HUGE_VAL,  // the pair's cut-off below
+                             [&](std::uint32_t j, double, double, double, double r2) {
+                               const double rc = std::max(ri, reach[j]);
+                               if ((j > i || j >= n_query) && r2 < rc * rc) out.push_back(j);
                              });
   });
 }

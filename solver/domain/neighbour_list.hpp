@@ -25,6 +25,13 @@ struct NeighbourList {
   // always listed, since their owners compute the mirror pair themselves.
   void build(const CellList& cells, const double* x, const double* y, const double* z,
              std::size_t n_query, double rc, bool exclude_self, bool half = false);
+  // Each query i's own cut-off rc[i] (<= the cells' size): points j within rc[i] of i.
+  void build_within(const CellList& cells, const double* x, const double* y, const double* z,
+                    std::size_t n_query, const double* rc);
+  // A half list of the points themselves (no self) with a cut-off per pair,
+  // max(reach[i], reach[j]) (<= the cells' size); reach covers every binned point.
+  void build_half_within(const CellList& cells, const double* x, const double* y, const double* z,
+                         std::size_t n_query, const double* reach);
 
  private:
   CompressedRowBuilder rows_;

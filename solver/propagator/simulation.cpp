@@ -147,11 +147,15 @@ void Simulation::rebuild_neighbours() {
     if (field.filled_on_build()) fluid_halo_.fill(v);
   });
   fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
-  fluid_pairs_.build(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned, cell_size_, true,
-                     /*half=*/true);
+  list_reach_.resize(f.size());  // owned and halo copies: 2 h_a + skin <= cell_size_
+  for (std::size_t a = 0; a < f.size(); ++a)
+    list_reach_[a] = kernel::kSupport * f.h[a] + fluid_skin_;
+  fluid_pairs_.build_half_within(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned,
+                                 list_reach_.data());
   xr_.assign(f.x.begin(), f.x.begin() + f.n_owned);
   yr_.assign(f.y.begin(), f.y.begin() + f.n_owned);
   zr_.assign(f.z.begin(), f.z.begin() + f.n_owned);
+  hr_.assign(f.h.begin(), f.h.begin() + f.n_owned);
   fluid_lists_stale_ = false;
   ++neighbour_builds_;
   // The sphere halo must cover the fluid-sphere kernel (with the skin) and the double
@@ -171,13 +175,14 @@ Simulation::Displacements Simulation::displacements() const {
   const DemParticles& s = dem_.spheres();
   const long nf = static_cast<long>(f.n_owned), ns = static_cast<long>(s.n_owned);
   const bool pairs = nf > 0 && xp_.size() == f.n_owned && sxp_.size() == s.n_owned;
-  double hmax = 0.0, df2 = 0.0, dfp2 = 0.0, ds2 = 0.0, dsp2 = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : hmax, df2, dfp2)
+  double grown = 0.0, pair_grown = 0.0, df2 = 0.0, dfp2 = 0.0, ds2 = 0.0, dsp2 = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : grown, pair_grown, df2, dfp2)
   for (long a = 0; a < nf; ++a) {
-    hmax = std::max(hmax, f.h[a]);
+    grown = std::max(grown, f.h[a] - hr_[a]);
     const double dx = f.x[a] - xr_[a], dy = f.y[a] - yr_[a], dz = f.z[a] - zr_[a];
     df2 = std::max(df2, dx * dx + dy * dy + dz * dz);
     if (!pairs) continue;
+    pair_grown = std::max(pair_grown, f.h[a] - hp_[a]);
     const double px = f.x[a] - xp_[a], py = f.y[a] - yp_[a], pz = f.z[a] - zp_[a];
     dfp2 = std::max(dfp2, px * px + py * py + pz * pz);
   }
@@ -189,8 +194,8 @@ Simulation::Displacements Simulation::displacements() const {
     const double px = s.x[j] - sxp_[j], py = s.y[j] - syp_[j], pz = s.z[j] - szp_[j];
     dsp2 = std::max(dsp2, px * px + py * py + pz * pz);
   }
-  return {std::sqrt(df2), std::sqrt(ds2), std::sqrt(dfp2), std::sqrt(dsp2),
-          kernel::kSupport * std::max(0.0, hmax - hmax_at_build_)};
+  return {std::sqrt(df2),  std::sqrt(ds2),           std::sqrt(dfp2),
+          std::sqrt(dsp2), kernel::kSupport * grown, kernel::kSupport * pair_grown};
 }
 
 // Verlet criteria (the lists were built at 2 h_max + skin, the fluid-sphere pairs at
@@ -204,9 +209,10 @@ Simulation::VerletMargins Simulation::verlet_margins(const Displacements& d) con
   VerletMargins m;
   m.fluid = fluid_skin_ - (2.0 * d.fluid + d.growth);
   const double moved = std::max(d.fluid + d.sphere, d.fluid_since_pairs + d.sphere_since_pairs);
-  m.sphere = sphere_pairs_stale()
-                 ? -1.0
-                 : sphere_pair_skin_ - (moved + params_.coupling.sphere_kernel_scale * d.growth);
+  m.sphere =
+      sphere_pairs_stale()
+          ? -1.0
+          : sphere_pair_skin_ - (moved + params_.coupling.sphere_kernel_scale * d.pair_growth);
   return m;
 }
 
@@ -248,13 +254,18 @@ void Simulation::build_sphere_pairs() {
   xp_.assign(fluid_.x.begin(), fluid_.x.begin() + nf);
   yp_.assign(fluid_.y.begin(), fluid_.y.begin() + nf);
   zp_.assign(fluid_.z.begin(), fluid_.z.begin() + nf);
+  hp_.assign(fluid_.h.begin(), fluid_.h.begin() + nf);
   sxp_.assign(s.x.begin(), s.x.begin() + s.n_owned);
   syp_.assign(s.y.begin(), s.y.begin() + s.n_owned);
   szp_.assign(s.z.begin(), s.z.begin() + s.n_owned);
   const double cut = fluid_sphere_cutoff();
   sphere_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), cut, 2);
-  sphere_pairs_.build_list(fluid_, sphere_cells_, params_.coupling.sphere_kernel_scale, cut,
-                           params_.coupling.drag_kernel_scale);
+  list_reach_.resize(nf);  // each fluid particle's: 2 scale h_a + skin <= cut
+  for (std::size_t a = 0; a < nf; ++a)
+    list_reach_[a] =
+        params_.coupling.sphere_kernel_scale * kernel::kSupport * fluid_.h[a] + sphere_pair_skin_;
+  sphere_pairs_.build_list(fluid_, sphere_cells_, params_.coupling.sphere_kernel_scale,
+                           list_reach_.data(), params_.coupling.drag_kernel_scale);
 }
 
 double Simulation::fluid_sphere_cutoff() const {

@@ -110,7 +110,8 @@ class Simulation {
   struct Displacements {
     double fluid = 0, sphere = 0;                          // since the fluid lists / sphere halo
     double fluid_since_pairs = 0, sphere_since_pairs = 0;  // since the fluid-sphere pairs
-    double growth = 0;                                     // 2 (h_max - h_max,build)
+    double growth = 0;       // 2 max_a (h_a - h_a at the fluid lists' build)
+    double pair_growth = 0;  // 2 max_a (h_a - h_a at the fluid-sphere pairs' build)
   };
   Displacements displacements() const;
   VerletMargins verlet_margins(const Displacements& d) const;
@@ -145,11 +146,13 @@ class Simulation {
   double cell_size_ = 0;
   int sort_interval_ = 100;  // steps between re-sorts (bench/RESULTS.md, session 25)
   int steps_since_sort_ = sort_interval_ - 1;  // the first step sorts (placement order)
-  // Verlet lists: positions and h_max at the last fluid build, the skin, whether the fluid
-  // lists must be rebuilt before their next use, and the sphere list build the
-  // fluid-sphere pairs index into.
-  std::vector<double> xr_, yr_, zr_;
-  std::vector<double> xp_, yp_, zp_, sxp_, syp_, szp_;  // fluid and spheres at the pairs' build
+  // Verlet lists: positions and h at the last fluid build, h_max then, the skin, whether
+  // the fluid lists must be rebuilt before their next use, and the sphere list build the
+  // fluid-sphere pairs index into. Each list holds a particle's pairs within its own
+  // reach (its h's support plus the skin), not h_max's: in a bed h grows as 1/eps^(1/3).
+  std::vector<double> xr_, yr_, zr_, hr_;
+  std::vector<double> xp_, yp_, zp_, hp_, sxp_, syp_, szp_;  // at the pairs' build
+  std::vector<double> list_reach_;  // scratch: each particle's cut-off at a build
   double hmax_at_build_ = 0, fluid_skin_ = 0, sphere_pair_skin_ = 0;
   bool fluid_lists_stale_ = true;
   long sphere_pairs_built_at_ = -1;

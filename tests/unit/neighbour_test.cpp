@@ -294,3 +294,46 @@ TEST(CellList, RejectsBadParameters) {
 }
 
 }  // namespace
+
+// Lists at each point's own reach (the solver's, where h varies: a bed under clear liquid):
+// full rows within rc_i, and half rows within max(R_i, R_j), against brute force.
+TEST(NeighbourList, OwnReachesMatchBruteForce) {
+  std::mt19937 gen(99u);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const std::size_t n = 800;
+  Points p;
+  std::vector<double> reach(n);
+  const double rc_max = 0.12;
+  for (std::size_t i = 0; i < n; ++i) {
+    p.push(u(gen), u(gen), 0.6 * u(gen));
+    reach[i] = rc_max * (0.5 + 0.5 * u(gen));
+  }
+  CellList cells;
+  cells.build(p.x.data(), p.y.data(), p.z.data(), n, rc_max, 2);
+  NeighbourList full, half;
+  full.build_within(cells, p.x.data(), p.y.data(), p.z.data(), n, reach.data());
+  half.build_half_within(cells, p.x.data(), p.y.data(), p.z.data(), n, reach.data());
+  std::size_t pairs = 0, from_other = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<std::uint32_t> want_full, want_half, got_full, got_half;
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 < reach[i] * reach[i]) want_full.push_back(j);
+      const double rc = std::max(reach[i], reach[j]);
+      if (j > i && r2 < rc * rc) {
+        want_half.push_back(j);
+        from_other += r2 >= reach[i] * reach[i];  // listed only for j's wider reach
+      }
+    }
+    got_full.assign(full.neighbour.begin() + full.begin(i), full.neighbour.begin() + full.end(i));
+    got_half.assign(half.neighbour.begin() + half.begin(i), half.neighbour.begin() + half.end(i));
+    std::sort(got_full.begin(), got_full.end());
+    std::sort(got_half.begin(), got_half.end());
+    EXPECT_EQ(got_full, want_full) << "point " << i;
+    EXPECT_EQ(got_half, want_half) << "point " << i;
+    pairs += want_half.size();
+  }
+  EXPECT_GT(pairs, 2 * n);        // a meaningful test: many pairs,
+  EXPECT_GT(from_other, n / 10);  // some of them through the other point's reach only
+}
