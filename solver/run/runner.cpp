@@ -515,33 +515,18 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
   // what the run needs (without the in-situ analysis, which ParaView adds).
   sim.step();
   const double mib_peak = peak_resident_mib();
-  const PassTimers before = sim.timers();
   const StepTiming timing = time_steps(sim);
   const double relax_wall = setup_wall + sc.startup.relax_steps * timing.step;
-  // the share of the timed steps in the passes over the fluid's lists (sediment_forecast.hpp)
-  double lists = 0.0, all = 0.0;
-  for (int k = 0; k < PassTimers::kCount; ++k) {
-    const double sec = sim.timers().seconds[k] - before.seconds[k];
-    all += sec;
-    if (k == PassTimers::kVoidage || k == PassTimers::kDensity || k == PassTimers::kMomentum ||
-        k == PassTimers::kNeighbours)
-      lists += sec;
-  }
-  const double list_share = all > 0.0 ? lists / all : 0.0;
   const SedimentForecast bed = forecast_sediment(sc, dt);
-  const double steps_wall = forecast_wall(bed, timing.step, list_share, dt, sc.time.end);
+  const double steps_wall = forecast_wall(bed, timing.step, dt, sc.time.end);
   const double run_wall = relax_wall + steps_wall;
   if (bed.forms)
     s += fmt::format(
         "sediment         forms by about {:.3g} s (Kynch, the slowest spheres from eps {} to a "
-        "bed at eps {}): then dt_SPH x {:.2f} (c0 / sqrt(eps) at its top) and a step x {:.2f} "
-        "(the fluid's lists, {:.0f} % of a step, cut at the bed's wider h: x {:.2f}); "
-        "the steps to t = {} s take x {:.2f} the start's rate. Not counted: the bed's contacts "
-        "(run/sediment_forecast.hpp)\n",
+        "bed at eps {}): dt_SPH then x {:.2f} (c0 / sqrt(eps) at its top), so {:.0f} SPH steps "
+        "to t = {} s in all; the bed's contacts are not counted (run/sediment_forecast.hpp)\n",
         bed.settle_time, bed.suspension_voidage, kBedVoidage, bed.step_ratio,
-        1.0 + list_share * (bed.list_growth - 1.0), 100.0 * list_share, bed.list_growth,
-        sc.time.end,
-        steps_wall / std::max(timing.step * sc.time.end / std::max(dt, 1e-300), 1e-300));
+        forecast_wall(bed, 1.0, dt, sc.time.end), sc.time.end);
   s += fmt::format(
       "wall time        about {} on this machine, {} threads (a step takes {:.3g} s, one "
       "thread's {:.3g} s of CPU; set-up and relaxation {}){}\n",

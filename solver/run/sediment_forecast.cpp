@@ -52,25 +52,18 @@ SedimentForecast forecast_sediment(const Scene& sc, double dt0) {
   dt = std::min(
       dt, 0.125 * h_bed * h_bed / (nu / eb + 0.1 * sc.fluid.alpha_artificial * h_bed * c_bed));
   f.step_ratio = dt / dt0;
-  f.list_growth = eps0 / eb;
   return f;
 }
 
-double forecast_wall(const SedimentForecast& f, double step, double list_share, double dt0,
-                     double t_end) {
+double forecast_wall(const SedimentForecast& f, double step, double dt0, double t_end) {
   if (!(t_end > 0.0) || !(dt0 > 0.0)) return 0.0;
-  if (!f.forms) return step * t_end / dt0;
-  const double grow = list_share * (f.list_growth - 1.0);
-  const double rate_gain = 1.0 / f.step_ratio - 1.0;  // of the steps per second
-  const auto wall_rate = [&](double t) {              // wall seconds per simulated second at t
-    const double x = std::min(1.0, t / std::max(f.settle_time, 1e-300));
-    return step * (1.0 + grow * x) * (1.0 + rate_gain * x) / dt0;
-  };
-  constexpr int kParts = 1000;  // midpoints
-  double wall = 0.0;
-  const double dt = t_end / kParts;
-  for (int k = 0; k < kParts; ++k) wall += wall_rate((k + 0.5) * dt) * dt;
-  return wall;
+  const double T = t_end, ts = f.settle_time;
+  if (!f.forms || !(ts > 0.0)) return step * T / dt0;
+  // steps per second 1/dt0 (1 + b min(1, t/t_s)), b = 1/step_ratio - 1: its integral
+  const double b = 1.0 / f.step_ratio - 1.0;
+  const double ramp =
+      T <= ts ? T + 0.5 * b * T * T / ts : ts * (1.0 + 0.5 * b) + (T - ts) * (1.0 + b);
+  return step * ramp / dt0;
 }
 
 }  // namespace sphdem
