@@ -123,8 +123,9 @@ void Simulation::build_initial_state() {
   next_dt();
 }
 
-// Every list anew: the fluid's halo, cells and half pair list at 2 h_max + skin, then the
-// spheres' halo and contact list and the fluid-sphere pairs.
+// Every list anew: the fluid's halo and cells at 2 h_max + skin, its half pair list at each
+// pair's max(2 h_a, 2 h_b) + skin, then the spheres' halo and contact list and the
+// fluid-sphere pairs.
 void Simulation::rebuild_neighbours() {
   FluidParticles& f = fluid_;
   const Box& box = params_.box;
@@ -198,12 +199,12 @@ Simulation::Displacements Simulation::displacements() const {
           std::sqrt(dsp2), kernel::kSupport * grown, kernel::kSupport * pair_grown};
 }
 
-// Verlet criteria (the lists were built at 2 h_max + skin, the fluid-sphere pairs at
-// 2 H_max + skin with H = scale h):
-//  - fluid pairs: 2 max|x - x_build| + 2 (h_max - h_max,build) <= skin;
+// Verlet criteria (the fluid pairs were listed within max(2 h_a, 2 h_b) + skin, the
+// fluid-sphere pairs within 2 H_a + skin with H = scale h, each h as at the build):
+//  - fluid pairs: 2 max|x - x_build| + 2 max_a (h_a - h_a,build) <= skin;
 //  - fluid-sphere pairs: the displacements of both sides since the pairs were built, and
 //    since the fluid and sphere halos were built (a pair with an image outside the halo),
-//    plus 2 scale (h_max - h_max,build), <= skin;
+//    plus 2 scale max_a (h_a - h_a,build), <= skin;
 // a negative margin: the lists are rebuilt at their next use.
 Simulation::VerletMargins Simulation::verlet_margins(const Displacements& d) const {
   VerletMargins m;

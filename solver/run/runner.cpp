@@ -526,7 +526,7 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
         "bed at eps {}): dt_SPH then x {:.2f} (c0 / sqrt(eps) at its top), so {:.0f} SPH steps "
         "to t = {} s in all; the bed's contacts are not counted (run/sediment_forecast.hpp)\n",
         bed.settle_time, bed.suspension_voidage, kBedVoidage, bed.step_ratio,
-        forecast_wall(bed, 1.0, dt, sc.time.end), sc.time.end);
+        forecast_steps(bed, dt, sc.time.end), sc.time.end);
   s += fmt::format(
       "wall time        about {} on this machine, {} threads (a step takes {:.3g} s, one "
       "thread's {:.3g} s of CPU; set-up and relaxation {}){}\n",

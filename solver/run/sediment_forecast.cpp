@@ -55,15 +55,15 @@ SedimentForecast forecast_sediment(const Scene& sc, double dt0) {
   return f;
 }
 
-double forecast_wall(const SedimentForecast& f, double step, double dt0, double t_end) {
+double forecast_steps(const SedimentForecast& f, double dt0, double t_end) {
   if (!(t_end > 0.0) || !(dt0 > 0.0)) return 0.0;
   const double T = t_end, ts = f.settle_time;
-  if (!f.forms || !(ts > 0.0)) return step * T / dt0;
+  if (!f.forms || !(ts > 0.0)) return T / dt0;
   // steps per second 1/dt0 (1 + b min(1, t/t_s)), b = 1/step_ratio - 1: its integral
   const double b = 1.0 / f.step_ratio - 1.0;
   const double ramp =
       T <= ts ? T + 0.5 * b * T * T / ts : ts * (1.0 + 0.5 * b) + (T - ts) * (1.0 + b);
-  return step * ramp / dt0;
+  return ramp / dt0;
 }
 
 }  // namespace sphdem

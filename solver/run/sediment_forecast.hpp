@@ -25,14 +25,18 @@ struct SedimentForecast {
   double settle_time = 0;         // s, the Kynch time of the slowest group
   double suspension_voidage = 0;  // eps0, the loosest settling group's
   double step_ratio = 1;          // dt_SPH with the bed over dt_SPH at t = 0 (<= 1)
-  double list_growth = 1;         // entries of the fluid's lists with the bed over at t = 0
 };
 
 // From the scene and the SPH step measured at t = 0.
 SedimentForecast forecast_sediment(const Scene& sc, double dt0);
 
-// The wall time of the steps from t = 0 to t_end, each taking `step` s: at dt0 at first, at
-// dt0 step_ratio once the bed has formed, linear in between.
-double forecast_wall(const SedimentForecast& f, double step, double dt0, double t_end);
+// The SPH steps from t = 0 to t_end: at dt0 at first, at dt0 step_ratio once the bed has
+// formed, the steps per second linear in between.
+double forecast_steps(const SedimentForecast& f, double dt0, double t_end);
+
+// Their wall time, each taking `step` s.
+inline double forecast_wall(const SedimentForecast& f, double step, double dt0, double t_end) {
+  return step * forecast_steps(f, dt0, t_end);
+}
 
 }  // namespace sphdem
