@@ -25,15 +25,16 @@ double wall_load_base(const DemParticles& s, double k, double area, const BasePo
 
 double fluid_load_base(const FluidParticles& f, const DemParticles& s, double walls_on_spheres_z,
                        const HydrostaticPressure& ph, double area, const BasePorePressure& b) {
-  double force = walls_on_spheres_z, fluid_mass = 0.0, fluid_volume = 0.0, sphere_volume = 0.0;
+  double force = walls_on_spheres_z, fluid_mass = 0.0, sphere_volume = 0.0;
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     if (f.kind[a] != kFluid) continue;
-    force += f.mass[a] * f.thz[a];
+    force += f.mass[a] * f.thz[a] - ph.gradient_z(f.z[a]) * f.mass[a] * f.eps[a] / f.rho[a];
     fluid_mass += f.mass[a];
-    fluid_volume += f.mass[a] * f.eps[a] / f.rho[a];
   }
-  for (std::size_t j = 0; j < s.n_owned; ++j) sphere_volume += s.volume(j);
-  force -= ph.gradient_z() * (fluid_volume + sphere_volume);
+  for (std::size_t j = 0; j < s.n_owned; ++j) {
+    sphere_volume += s.volume(j);
+    force -= ph.gradient_z(s.z[j]) * s.volume(j);
+  }
   const double clear_column = b.g * (fluid_mass + b.rho_f * sphere_volume);
   return (force - clear_column) / (area * b.rho_f * b.g * b.H);
 }

@@ -40,8 +40,8 @@ double wall_load_base(const DemParticles& s, double k, double area, const BasePo
 //                                            between mobile particles cancel in the sum)
 //     + walls_on_spheres_z                  (the variational pairs of the wall particles
 //                                            with the spheres, pressure_coupling.hpp)
-//     + |grad P_h| (sum_a m_a eps_a / rho_a + sum_j V_j)  (the hydrostatic split's
-//                                            analytic forces, zero without it),
+//     - sum_a dP_h/dz(z_a) m_a eps_a / rho_a  (the hydrostatic split's analytic
+//     - sum_j dP_h/dz(z_j) V_j                 forces, zero without it),
 //   fluid_load = (F - |g| sum_a m_a - rho_f |g| sum_j V_j) / (area rho_f |g| H):
 // the fluid's weight and the weight of the water the spheres displace are the clear
 // column's load, so water at rest reads 0. With wall_load_base it closes the column's

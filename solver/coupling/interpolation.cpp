@@ -99,7 +99,7 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
       f.ax[b] -= p_over_rho * gx;
       f.ay[b] -= p_over_rho * gy;
       f.az[b] -=
-          p_over_rho * gz + ph.gradient_z() * f.eps[b] / f.rho[b];  // -grad P_h / rho_intrinsic
+          p_over_rho * gz + ph.gradient_z(zb) * f.eps[b] / f.rho[b];  // -grad P_h / rho_intrinsic
     }
   }
   return walls_on_spheres_z;
@@ -157,7 +157,7 @@ double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
     if (pressure) {
       s.gx[j] = sum(kGx);
       s.gy[j] = sum(kGy);
-      s.gz[j] = sum(kGz) - pressure->gradient_z();
+      s.gz[j] = sum(kGz) - pressure->gradient_z(s.z[j]);
     } else if (S > 0.0) {  // (2.69)
       const double inv = 1.0 / S;
       s.gx[j] = sum(kGx) * inv;

@@ -458,8 +458,35 @@ double coupling_energy(Config& c, const TaitEnergy& eos, const HydrostaticPressu
 
 }  // namespace
 
+// The split's P_h (sph/hydrostatic_pressure.hpp): the depth below z_s times rho0 |g| in
+// the bulk, zero in the top layers, continuous with its slope across the blend, and its
+// gradient_z the derivative of its value (central differences, step 1e-6 of the taper).
+TEST(Coupling, HydrostaticSplitTapersToZeroAtTheTop) {
+  const double rho0 = 1000.0, g = -9.81, zs = 0.1, w = 0.02;
+  const HydrostaticPressure ph{rho0, g, zs, w};
+  EXPECT_DOUBLE_EQ(ph(0.03), rho0 * 9.81 * (zs - 0.03));
+  EXPECT_DOUBLE_EQ(ph.gradient_z(0.03), rho0 * g);
+  EXPECT_EQ(ph(zs - w), 0.0);
+  EXPECT_EQ(ph(zs + 0.01), 0.0);
+  EXPECT_EQ(ph.gradient_z(zs - 0.5 * w), 0.0);
+  const double step = 1e-6 * w;
+  for (double z = zs - 2.5 * w; z < zs; z += 0.01 * w) {
+    const double slope = (ph(z + step) - ph(z - step)) / (2.0 * step);
+    // the curvature jumps at the blend's ends (by up to 10/w): the differences' error there
+    // is ~ 10/w * step / 2 = 5e-6 of rho0 |g|
+    EXPECT_NEAR(ph.gradient_z(z), slope, 2e-5 * rho0 * 9.81) << "z " << z;
+    EXPECT_LE(ph.gradient_z(z), 0.0) << "z " << z;  // P_h never grows upward
+    EXPECT_GE(ph(z), 0.0) << "z " << z;
+  }
+  for (double edge : {zs - 2.0 * w, zs - w}) {  // C1 at both ends of the blend
+    EXPECT_NEAR(ph(edge - step), ph(edge + step), 3.0 * step * rho0 * 9.81);
+    EXPECT_NEAR(ph.gradient_z(edge - step), ph.gradient_z(edge + step), 1e-4 * rho0 * 9.81);
+  }
+}
+
 // The variational coupling's forces are minus the gradient of the energy above, with and
-// without the hydrostatic split (scene key coupling.hydrostatic_split), with the fluid's
+// without the hydrostatic split (scene key coupling.hydrostatic_split; linear, and tapered
+// to zero over the top as the solver runs it: a wrong slope in the blend fails), with the fluid's
 // kernel and with the spheres' kernel twice as wide (coupling.sphere_kernel_scale = 2; its
 // support, 1.3 mm, exceeds half the 1.6 mm periodic box, so spheres near a face reach a
 // fluid particle through two images): checked against
@@ -472,7 +499,7 @@ double coupling_energy(Config& c, const TaitEnergy& eos, const HydrostaticPressu
 TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
   const TaitEnergy eos;
   for (const auto& [split, kernel_scale] :
-       {std::pair{false, 1.0}, {true, 1.0}, {false, 2.0}, {true, 2.0}}) {
+       {std::pair{0, 1.0}, {1, 1.0}, {2, 1.0}, {0, 2.0}, {1, 2.0}, {2, 2.0}}) {
     Config c;
     build(c, 12, 9u, 0.1, kernel_scale);
     FluidParticles& f = c.f;
@@ -480,8 +507,11 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
     for (std::size_t j = 0; j < s.n_owned; ++j)
       s.radius[j] *= 2.0;  // voidage 0.9-1, away from the floor
     // a strong 'gravity' so that P_h (up to 4e4 Pa) is as large as the EOS's P (B = 1e5 Pa)
+    // split 2: tapered over the spheres' heights (0.5-0.8 of the box): P_h linear below
+    // 0.6, blended over 0.6-0.8, zero above
+    const double taper = split == 2 ? 0.2 * c.box.hi[2] : 0.0;
     const HydrostaticPressure ph =
-        split ? HydrostaticPressure{1000.0, -2e4, c.box.hi[2]} : HydrostaticPressure{};
+        split ? HydrostaticPressure{1000.0, -2e4, c.box.hi[2], taper} : HydrostaticPressure{};
     coupling_energy(c, eos, ph);
     std::fill(f.ax.begin(), f.ax.end(), 0.0);
     std::fill(f.ay.begin(), f.ay.end(), 0.0);
@@ -625,7 +655,7 @@ TEST(Coupling, SphereSumsMatchBruteForceWithEitherInstructionSet) {
     std::mt19937 rng(8);
     std::uniform_real_distribution<double> u(0.0, 100.0);
     for (std::size_t a = 0; a < f.n_owned; ++a) f.P[a] = u(rng);
-    const HydrostaticPressure ph{1000.0, -9.81, c.box.hi[2]};
+    const HydrostaticPressure ph{1000.0, -9.81, c.box.hi[2], 0.2 * c.box.hi[2]};  // tapered
     const std::size_t ns = s.n_owned;
     const auto owner = [&](std::size_t j) { return j < ns ? j : c.sh.source()[j - ns]; };
     // brute force: per owned sphere, S, S eps, S u_x, m theta_x W, and the pressure sums
@@ -671,11 +701,11 @@ TEST(Coupling, SphereSumsMatchBruteForceWithEitherInstructionSet) {
         const double scale = std::abs(Pg[0][j]) + std::abs(Pg[1][j]) + std::abs(Pg[2][j]) + 1.0;
         EXPECT_NEAR(s.gx[j], Pg[0][j], 1e-12 * scale) << "sphere " << j;
         EXPECT_NEAR(s.gy[j], Pg[1][j], 1e-12 * scale) << "sphere " << j;
-        EXPECT_NEAR(s.gz[j], Pg[2][j] - ph.gradient_z(), 1e-12 * scale) << "sphere " << j;
+        EXPECT_NEAR(s.gz[j], Pg[2][j] - ph.gradient_z(s.z[j]), 1e-12 * scale) << "sphere " << j;
       }
       for (std::size_t a = 0; a < f.n_owned; ++a) {
         if (f.kind[a] != kFluid) continue;
-        const double want = fluid_share[a] - ph.gradient_z() * f.eps[a] / f.rho[a];
+        const double want = fluid_share[a] - ph.gradient_z(f.z[a]) * f.eps[a] / f.rho[a];
         EXPECT_NEAR(f.az[a], want, 1e-12 * (std::abs(want) + 1.0)) << "fluid particle " << a;
       }
     }
