@@ -19,7 +19,13 @@ class PairAccumulator {
     n_ = n;
     fields_ = fields;
     threads_ = omp_get_max_threads();
-    data_.assign(static_cast<std::size_t>(threads_) * n * fields, 0.0);
+    // each thread zeroes its own copy: one thread zeroing them all took longer than the
+    // pass itself at 8-16 threads (bench/RESULTS.md, session 28)
+    const std::size_t copy = n * static_cast<std::size_t>(fields);
+    data_.resize(static_cast<std::size_t>(threads_) * copy);
+    double* data = data_.data();
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (int t = 0; t < threads_; ++t) std::fill_n(data + t * copy, copy, 0.0);
     entries_.resize(threads_);
   }
   // The calling thread's buffer of at least `count` doubles (grows only on a longer row).
@@ -35,7 +41,9 @@ class PairAccumulator {
     return staged_.data();
   }
   // The calling thread's row for particle i.
-  double* row(int thread, std::size_t i) { return data_.data() + (thread * n_ + i) * fields_; }
+  double* row(int thread, std::size_t i) {
+    return data_.data() + (thread * n_ + i) * fields_;
+  }
   // Sums the threads' copies into the first and returns it (n rows of `fields` values);
   // called outside a parallel region.
   double* fold() {
