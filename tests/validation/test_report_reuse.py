@@ -113,6 +113,37 @@ class Reuse(unittest.TestCase):
         self.assertEqual(rows[0].note, "")
 
 
+class RunDir(unittest.TestCase):
+    """--run-dir KEY=DIR takes a run made by hand: finished when its log reaches the scene's
+    time.end, stopped before it otherwise; another scene's directory is refused."""
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, self.tmp)
+        os.makedirs(os.path.join(self.tmp, "cases"))
+        open(os.path.join(self.tmp, "cases", "scene.yaml"), "w").write("name: scene\n")
+        self.old_repo, report.REPO = report.REPO, self.tmp
+        self.addCleanup(setattr, report, "REPO", self.old_repo)
+        self.run_ = report.Run("scene_long", "cases/scene.yaml", {}, long=True)
+
+    def made(self, name, reached, end=1.0):
+        d = tempfile.mkdtemp(dir=self.tmp)
+        open(os.path.join(d, "case.yaml"), "w").write(f"name: {name}\ntime: {{end: {end}}}\n")
+        open(os.path.join(d, "log.csv"), "w").write(f"time,step\n0,0\n{reached},10\n")
+        return d
+
+    def test_finished_and_stopped(self):
+        self.assertTrue(report.adopt(self.run_, self.made("scene", 1.0)).ok)
+        stopped = report.adopt(self.run_, self.made("scene", 0.4))
+        self.assertFalse(stopped.ok)
+        self.assertEqual(stopped.log["time"][-1], 0.4)
+
+    def test_other_scene_refused(self):
+        with self.assertRaises(SystemExit) as e:
+            report.adopt(self.run_, self.made("other", 1.0))
+        self.assertIn("its scene is 'other'", str(e.exception))
+
+
 class Strict(unittest.TestCase):
     def rows(self, *statuses):
         out = []
