@@ -89,8 +89,8 @@ int main(int argc, char** argv) {
       "# %s: %zu fluid (owned SPH), %zu spheres, %d threads; setup %.2f s; %d steps "
       "after %d relaxation and %d warm-up steps: %.4f s per step\n",
       argv[1], sim.fluid().n_owned, sim.spheres().n_owned, threads,
-      std::chrono::duration<double>(t1 - t0).count(), steps, sim.scene().startup.relax_steps,
-      warmup, wall / steps);
+      std::chrono::duration<double>(t1 - t0).count(), steps,
+      resume_dir.empty() ? sim.scene().startup.relax_steps : 0, warmup, wall / steps);
   std::printf(
       "# per step: %.3g fluid-sphere list entries, %.3g within the kernel, %.3g drag "
       "entries, %.3g fluid pair entries\n",
