@@ -288,20 +288,21 @@ def adopt(run, out_dir):
     rows of what it reached. Its wall time is the progress lines' (sphdem.out or RUN.md beside
     it are the record); the report adds 0 s."""
     case = yaml.safe_load(open(run.case_path()))
-    mine = os.path.join(out_dir, "case.yaml")
-    if not os.path.exists(mine):
+    if not os.path.exists(os.path.join(out_dir, "case.yaml")):
         sys.exit(f"report.py: --run-dir {run.key}={out_dir}: no case.yaml there (not a sphdem run directory)")
-    theirs = yaml.safe_load(open(mine))
+    result = RunResult(run, out_dir, 0.0, 1, ["(made by hand)", out_dir])
+    theirs = result.case
     if theirs.get("name") != case.get("name"):
         sys.exit(f"report.py: --run-dir {run.key}={out_dir}: its scene is '{theirs.get('name')}', "
                  f"{run.key} runs '{case.get('name')}' ({run.case})")
-    log = read_csv(os.path.join(out_dir, "log.csv"))
     end = float(theirs["time"]["end"])
+    log = result.log
     reached = float(log["time"][-1]) if log is not None and len(log["time"]) else 0.0
-    rc = 0 if reached >= end * (1 - 1e-9) else 1
+    result.returncode = 0 if reached >= end * (1 - 1e-9) else 1
+    result.ok = result.returncode == 0
     print(f"[report] {run.key} from {out_dir}: t = {reached:.4g} of {end:g} s"
-          + ("" if rc == 0 else " (stopped before its end)"), flush=True)
-    return RunResult(run, out_dir, 0.0, rc, ["(made by hand)", out_dir])
+          + ("" if result.ok else " (stopped before its end)"), flush=True)
+    return result
 
 
 # ----------------------------------------------------------------------------------------
