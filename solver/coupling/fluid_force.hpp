@@ -8,6 +8,7 @@
 // Where the CPU has AVX-512 the passes run in eight lanes with the vector forms of exp,
 // log10 and pow (glibc's libmvec, within 4 ulp of libm); elsewhere they are scalar loops.
 #include <cstddef>
+#include <vector>
 
 #include "coupling/drag_law_table.hpp"
 #include "dem/dem_particles.hpp"
@@ -27,6 +28,19 @@ struct FluidForceWindow {
   bool accumulate_mean = false;
   double weight = 0;
   bool variational = false;
+};
+
+// What the spheres' fluid force passes leave behind: each owned sphere's drag coefficient
+// (the drag exchange's gains, coupling/drag_exchange.hpp) and the largest relaxation rate
+// (which bounds the next half step's sub-step), with the lanes the passes run in.
+// Spheres per block of a force pass: a block's fluid forces are still in the cache when
+// its sphere rows use them.
+inline constexpr std::size_t kSphereBlock = 256;
+
+struct SphereDrag {
+  std::vector<double> c;
+  double rate_max = 0;  // 0 before the first pass and without fluid
+  PairIsa isa = best_pair_isa();
 };
 
 // The fluid force on spheres [begin, end) into (fx, fy, fz) after its share of the window

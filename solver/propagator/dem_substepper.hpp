@@ -1,41 +1,30 @@
 #pragma once
-// The DEM side of the propagator as its own unit: the spheres, their halo and contact
-// list, the contact history, and the velocity-Verlet sub-steps over half an SPH step with
-// the fluid fields at the spheres held (physics.md §4). The coupled step (simulation.hpp)
-// writes the fluid fields at the spheres and reads back their mean force fm.
+// The DEM side of the propagator as its own unit: the spheres with their lists
+// (dem/sphere_lists.hpp) and the velocity-Verlet sub-steps over half an SPH step with the
+// fluid fields at the spheres held (physics.md §4), in one of three schemes: one pass per
+// sub-step (its force rows also correct and predict), the predictor a pass apart (rigid
+// groups share their force between), or multi-rate (propagator/multirate_half_step.hpp).
+// The coupled step (simulation.hpp) writes the fluid fields at the spheres and reads back
+// their mean force fm.
 #include <cstdint>
 #include <vector>
 
-#include "dem/contact_forces.hpp"
+#include "coupling/fluid_force.hpp"
 #include "dem/contact_history.hpp"
 #include "dem/contact_registry.hpp"
+#include "dem/contact_rows.hpp"
 #include "dem/dem_particles.hpp"
+#include "dem/rigid_groups.hpp"
 #include "dem/rotation.hpp"
+#include "dem/sphere_lists.hpp"
+#include "dem/verlet.hpp"
 #include "domain/box.hpp"
-#include "domain/cell_list.hpp"
 #include "domain/measured_shares.hpp"
-#include "domain/periodic_halo.hpp"
 #include "io/checkpoint_file.hpp"
+#include "propagator/multirate_half_step.hpp"
 #include "propagator/step_params.hpp"
-#include "sph/pair_isa.hpp"
 
 namespace sphdem {
-
-// How far the fluid side reaches into the sphere halo: `needed` and `wanted` (with the
-// fluid's Verlet skin) from the fluid particles, `sphere_kernel` a kernel centred on the
-// spheres (double smoothing's big spheres, 3.9), which the contact skin extends.
-struct FluidReach {
-  double needed = 0, wanted = 0, sphere_kernel = 0;
-};
-
-// How the half steps went with time.multirate (printed at the end of a run).
-struct MultirateTally {
-  long half_steps = 0;       // with spheres
-  long multirate = 0;        // of which the spheres out of contact took the fluid's step
-  long sent_back = 0;        // tried, and started again with every sphere sub-stepped
-  double near_spheres = 0;   // summed over the multirate half steps: the spheres sub-stepped
-  double owned_spheres = 0;  // ... and all of them
-};
 
 class DemSubstepper {
  public:
@@ -46,16 +35,15 @@ class DemSubstepper {
   const DemStepParams& params() const { return p_; }
   // time.multirate on or off from the next half step (step_timing times steps without it).
   void set_multirate(bool on) { p_.multirate = on; }
-  const PeriodicHalo& halo() const { return halo_; }
-  const ContactNeighbourList& contacts() const { return contacts_; }
-  const ContactHistory& contact_history() const { return history_; }
-  std::vector<ContactHistory::Record> contact_records() const {
-    return history_.records(s_, contacts_);
-  }
+  const SphereLists& lists() const { return lists_; }
+  const PeriodicHalo& halo() const { return lists_.halo(); }
+  const ContactNeighbourList& contacts() const { return lists_.contacts(); }
+  const ContactHistory& contact_history() const { return lists_.history(); }
+  std::vector<ContactHistory::Record> contact_records() const { return lists_.records(s_); }
   double dt() const { return dt_; }  // the last sub-step
   // The largest drag relaxation rate c eps / m over the spheres in the last force pass
   // (0 before the first, and without fluid); carried from one step to the next.
-  double drag_rate_max() const { return drag_rate_max_; }
+  double drag_rate_max() const { return drag_.rate_max; }
   // The fluid side of the drag exchange is explicit: the fluid a sphere drags relaxes at
   // r times the sphere's rate, r = (1 - eps) rho_p / (eps rho_f). A sphere relaxing toward
   // fluid held over a step, and the fluid getting the impulse back, multiply their slip by
@@ -73,16 +61,16 @@ class DemSubstepper {
   // rigid group takes the sum of its members' over its mass.
   void add_impulses(const double* impulse);
   int substeps() const { return substeps_; }  // per SPH step
-  const MultirateTally& multirate_tally() const { return tally_; }
+  const MultirateTally& multirate_tally() const { return multirate_.tally(); }
   // Sphere halo and contact list builds so far: a list into the halo is stale once it changes.
-  long list_builds() const { return list_builds_; }
+  long list_builds() const { return lists_.builds(); }
 
-  void set_fluid_reach(const FluidReach& reach) { reach_ = reach; }
+  void set_fluid_reach(const FluidReach& reach) { lists_.set_fluid_reach(reach); }
   // The sphere halo (wide enough for the fluid's reach and for contacts) and the contact
   // list at its cut-off; the contact history follows the new list.
-  void rebuild_lists();
+  void rebuild_lists() { lists_.rebuild(s_); }
   // Owned spheres re-sorted into cells of this size (memory locality), then the lists.
-  void sort_by_cell(double cell_size);
+  void sort_by_cell(double cell_size) { lists_.sort_by_cell(s_, cell_size); }
   // Sub-steps over one half of an SPH step of length dt.
   void half_step(double dt, bool first_half);
   // Fluid force (2.68) and contact force (2.36) on each owned sphere, then its
@@ -95,33 +83,25 @@ class DemSubstepper {
   void switch_pressure_force();
   // The g kept by the last keep_pressure_gradient, axis 0-2 (tests).
   const std::vector<double>& kept_pressure_gradient(int axis) const {
-    return axis == 0 ? g_old_x_ : axis == 1 ? g_old_y_ : g_old_z_;
+    return axis == 0 ? g_old_.x : axis == 1 ? g_old_.y : g_old_.z;
   }
   void clear_mean_force();
 
   // Checkpoints: the spheres' state fields and what the sub-steps carry from one SPH step
-  // to the next besides them (the contact history by id pairs, the drag relaxation rate
-  // that sets the next sub-step, the fluid's reach into the halo). Read back into a
+  // to the next besides them (the lists' contact history by id pairs and the fluid's
+  // reach, the drag relaxation rate that sets the next sub-step). Read back into a
   // substepper made with the checkpoint's spheres (read_spheres).
   void write_state(CheckpointWriter& w) const;
   static DemParticles read_spheres(const CheckpointReader& r);
   void read_state(const CheckpointReader& r);
 
  private:
-  template <class Force>
-  void sum_over_rigid_groups(Force force);
-  // Adds each rigid group's summed value over its mass to (x, y, z) of its members.
-  void add_group_shares(std::vector<double>& x, std::vector<double>& y,
-                        std::vector<double>& z) const;
   // The cost of a sphere in its force pass, in contact-list entries: each thread takes
   // the spheres of one equal share (domain/row_partition.hpp) in every pass of a sub-step.
   double row_cost() const { return kContactRowCost + (p_.fluid_force ? kDragRowCost : 0.0); }
   // a drag law's evaluation, the fluid force and the sub-step's update of one sphere, in
   // list entries (where the two threads' samples in these passes even out, bench/RESULTS.md)
   static constexpr double kDragRowCost = 40.0;
-  // spheres per block of the force pass: the fluid forces of a block are still in the
-  // cache when its contact rows add them to the accelerations
-  static constexpr std::size_t kForceBlock = 256;
   // What the force pass does with a sphere once it has its new acceleration a: nothing
   // (the sub-step's passes apart), or the corrector v += h/2 (a - a_old) and, with
   // `predict`, the next sub-step's predictor (x += h (v + h a / 2), v += h a), both into the
@@ -130,6 +110,10 @@ class DemSubstepper {
   struct Advance {
     bool correct = false, predict = false;
     double h = 0;
+  };
+  // The next sub-step's positions, velocities and spins (the fused passes' second buffers).
+  struct NextSubstep {
+    std::vector<double> x, y, z, vx, vy, vz, wx, wy, wz;
   };
   // returns the largest predictor step squared (0 without `predict`)
   double forces_advancing(bool accumulate_mean, double weight, double dt_springs,
@@ -142,54 +126,24 @@ class DemSubstepper {
   // the spin) in the force pass: one pass over the spheres per sub-step (without rigid
   // groups).
   void substeps_fused(double h, int count, double weight);
-  // Spheres out of contact take the fluid's step, the others the contact sub-steps; false
-  // where that does not pay or cannot be trusted (the half step is then as it was).
-  bool substeps_multirate(double dt, double h, int count);
-  double free_step(double h, double weight, bool fresh);
-  template <class Contact>
-  double near_substeps(const Contact& contact, double h, int count, double weight);
   // ... and with the predictor a pass of its own (the rigid groups' shared force comes
   // between)
   void substeps_apart(double h, int count, double weight);
-  // Adds the largest step of a predictor to the drift, and rebuilds the lists once the
-  // drift has used up half the skin: where the bound says it may have, the drift becomes
-  // the largest displacement since the build (in a bed the spheres' largest steps do not
-  // add up to anyone's displacement).
-  void drifted(double max_step2);
-  double displacement_since_build() const;
 
-  Box box_;
   DemStepParams p_;
   DemParticles s_;
-  PeriodicHalo halo_;
-  CellList cells_;
-  ContactNeighbourList contacts_;
-  ContactHistory history_;
-  FluidReach reach_;
-  std::vector<double> a_old_x_, a_old_y_, a_old_z_;  // accelerations of the previous sub-step
-  std::vector<double> x_next_, y_next_, z_next_;     // positions and velocities of the
-  std::vector<double> vx_next_, vy_next_, vz_next_;  // next sub-step (fused passes)
-  std::vector<double> wx_next_, wy_next_, wz_next_;  // ... and spins
-  std::vector<std::uint32_t> near_;                  // multirate: the spheres near a contact
-  std::vector<double> saved_;                // multirate: the state at the start of the half step
-  std::vector<ContactState> history_saved_;  // ... and the near spheres' contact history
-  MultirateTally tally_;
-  std::vector<double> g_old_x_, g_old_y_, g_old_z_;  // g before a variational coupling pass
-  std::vector<double> drag_c_;      // drag coefficient of each sphere in this force pass (scratch)
-  PairIsa isa_ = best_pair_isa();   // the drag coefficients' instruction set
-  MeasuredShares measured_shares_;  // the dry force pass's rows per thread
-  OldTorque torque_old_;            // torques of the previous sub-step
-  std::vector<double> group_fx_, group_fy_, group_fz_, group_m_;
-  int n_groups_ = 0;
-  double dt_ = 0;
+  SphereLists lists_;
+  RigidGroups groups_;
+  SphereDrag drag_;  // the last force pass's drag coefficients and rate
   std::vector<double> drag_gain_;
-  double drag_rate_max_ = 0;  // sets the next half step's sub-step with dt_max
-  // a bound on every sphere's displacement since the last list build: the largest
-  // displacement when last measured plus the largest step of each sub-step since (the
-  // Verlet skin's test without reading the positions at the build every sub-step)
-  double drift_ = 0;
+  MultirateHalfStep multirate_;
+  NextSubstep next_;
+  SphereVectors a_old_;             // accelerations of the previous sub-step
+  OldTorque torque_old_;            // torques of the previous sub-step
+  SphereVectors g_old_;             // g before a variational coupling pass
+  MeasuredShares measured_shares_;  // the dry force pass's rows per thread
+  double dt_ = 0;
   int substeps_ = 0;
-  long list_builds_ = 0;
 };
 
 }  // namespace sphdem

@@ -12,8 +12,10 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "domain/state_snapshot.hpp"
 #include "io/checkpoint_file.hpp"
 #include "propagator/simulation.hpp"
 #include "scene/scene.hpp"
@@ -148,6 +150,56 @@ void expect_every_member_listed() {
 TEST(FieldRegistry, EveryMemberIsListedOnce) {
   expect_every_member_listed<FluidParticles>();
   expect_every_member_listed<DemParticles>();
+}
+
+// A snapshot keeps exactly the fields the registry tags state and not constant: restored
+// for some particles, those get their values back and the rest keep theirs; the constant
+// and scratch fields are never touched.
+template <class P>
+void expect_snapshot_by_tags() {
+  P p;
+  const std::size_t n = 5;
+  p.resize(n);
+  p.n_owned = n;
+  // a value of the field's own type, distinct per field, particle and fill (small types too)
+  const auto value = [](const auto& v, int offset, int f, std::size_t i) {
+    return static_cast<std::decay_t<decltype(v[0])>>(offset + 7 * f + static_cast<int>(i));
+  };
+  const auto fill = [&](int offset) {
+    int f = 0;
+    p.for_each_field([&](const FieldInfo&, auto& v) {
+      for (std::size_t i = 0; i < n; ++i) v[i] = value(v, offset, f, i);
+      ++f;
+    });
+  };
+  const auto expect = [&](bool some) {  // some: only particles 1 and 3 restored
+    int f = 0;
+    p.for_each_field([&](const FieldInfo& field, const auto& v) {
+      const bool kept = field.state() && !field.constant();
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool back = kept && (!some || i == 1 || i == 3);
+        EXPECT_EQ(v[i], value(v, back ? 0 : 100, f, i)) << field.name << " particle " << i;
+      }
+      ++f;
+    });
+  };
+  fill(0);
+  StateSnapshot snap;
+  snap.save(p, n);
+  fill(100);
+  snap.restore(p, {1, 3});
+  expect(true);
+  snap.restore(p);
+  expect(false);
+  int changing = 0;
+  p.for_each_field(
+      [&](const FieldInfo& f, const auto&) { changing += f.state() && !f.constant(); });
+  EXPECT_GT(changing, 0);
+}
+
+TEST(FieldRegistry, SnapshotKeepsTheChangingStateFields) {
+  expect_snapshot_by_tags<DemParticles>();
+  expect_snapshot_by_tags<FluidParticles>();
 }
 
 // After the fluid side is evaluated, every halo-tagged field's halo copies equal their
