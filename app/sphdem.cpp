@@ -18,6 +18,7 @@
 #include "analysis/contact_network.hpp"
 #include "analysis/voidage_grid.hpp"
 #include "io/checkpoint_file.hpp"
+#include "launcher_ranks.hpp"
 #include "propagator/simulation.hpp"
 #include "run/checkpoints.hpp"
 #include "run/runner.hpp"
@@ -221,8 +222,14 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
 
   CLI11_PARSE(app, argc, argv);
-  if (*figures) return make_figures(fig_dir);
   if (*docs) return print_or_update_docs(doc_block, doc_files);
+  if (const auto ranks =
+          sphdem::launcher_ranks([](const char* v) -> const char* { return std::getenv(v); });
+      ranks.size > 1) {
+    if (ranks.rank == 0) std::cerr << sphdem::one_process_message(ranks);
+    return 2;
+  }
+  if (*figures) return make_figures(fig_dir);
   if (!fidelity.empty()) overrides.insert(overrides.begin(), "fidelity=" + fidelity);
   sphdem::install_stop_signals();
   try {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Set-up plus the whole test suite: ctest labels unit, validation, extremes, restart,
+# Set-up plus the whole test suite: ctest labels unit, validation, extremes, restart, mpi,
 # format (every C++ file as .clang-format says) and insitu (once the Catalyst adaptor is
 # built). Extra arguments go to ctest (e.g. -L unit) and run that alone. With none (as
 # .ci/run calls it) two more checks follow, each built apart with only what it needs and
