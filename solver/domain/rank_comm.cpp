@@ -1,0 +1,80 @@
+#include "domain/rank_comm.hpp"
+
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace sphdem {
+
+namespace {
+
+bool mpi_running() {
+  int on = 0, off = 0;
+  MPI_Initialized(&on);
+  MPI_Finalized(&off);
+  return on && !off;
+}
+
+}  // namespace
+
+RankComm::RankComm() : RankComm(mpi_running() ? MPI_COMM_WORLD : MPI_COMM_NULL) {}
+
+RankComm::RankComm(MPI_Comm comm) : comm_(comm) {
+  if (comm_ == MPI_COMM_NULL) return;
+  MPI_Comm_rank(comm_, &rank_);
+  MPI_Comm_size(comm_, &size_);
+}
+
+void RankComm::sum(std::vector<std::uint64_t>& values) const {
+  if (!parallel() || values.empty()) return;
+  static_assert(sizeof(unsigned long) == sizeof(std::uint64_t));
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_UNSIGNED_LONG,
+                MPI_SUM, comm_);
+}
+
+std::uint64_t RankComm::sum(std::uint64_t value) const {
+  std::vector<std::uint64_t> v{value};
+  sum(v);
+  return v[0];
+}
+
+double RankComm::max(double value) const {
+  if (parallel()) MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  return value;
+}
+
+double RankComm::min(double value) const {
+  if (parallel()) MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, comm_);
+  return value;
+}
+
+std::vector<std::uint64_t> RankComm::counts(const std::vector<std::uint64_t>& send_count) const {
+  if (!parallel()) return send_count;
+  std::vector<std::uint64_t> recv(size_);
+  MPI_Alltoall(send_count.data(), 1, MPI_UNSIGNED_LONG, recv.data(), 1, MPI_UNSIGNED_LONG, comm_);
+  return recv;
+}
+
+void RankComm::exchange(const void* send, const std::vector<std::uint64_t>& send_count, void* recv,
+                        const std::vector<std::uint64_t>& recv_count, std::size_t bytes) const {
+  if (!parallel()) {
+    if (send_count[0] > 0) std::memmove(recv, send, send_count[0] * bytes);
+    return;
+  }
+  std::vector<int> sc(size_), sd(size_), rc(size_), rd(size_);
+  std::uint64_t s = 0, r = 0;
+  for (int q = 0; q < size_; ++q) {
+    const std::uint64_t sb = send_count[q] * bytes, rb = recv_count[q] * bytes;
+    if (s + sb > std::numeric_limits<int>::max() || r + rb > std::numeric_limits<int>::max())
+      throw std::overflow_error("RankComm::exchange: more than 2 GiB in one exchange");
+    sc[q] = static_cast<int>(sb);
+    sd[q] = static_cast<int>(s);
+    rc[q] = static_cast<int>(rb);
+    rd[q] = static_cast<int>(r);
+    s += sb;
+    r += rb;
+  }
+  MPI_Alltoallv(send, sc.data(), sd.data(), MPI_BYTE, recv, rc.data(), rd.data(), MPI_BYTE, comm_);
+}
+
+}  // namespace sphdem

@@ -1,0 +1,42 @@
+#pragma once
+// The ranks of a run: an MPI communicator with the few collectives the solver needs, each
+// exact in any order, so that two runs on the same ranks give the same bits: sums of
+// integers, max and min of doubles, and the personalised all-to-all exchange. One rank
+// without MPI initialised: every collective is the identity. Knows nothing of SPH or DEM.
+#include <mpi.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sphdem {
+
+class RankComm {
+ public:
+  RankComm();  // MPI_COMM_WORLD if MPI is initialised, else one rank
+  explicit RankComm(MPI_Comm comm);
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool parallel() const { return size_ > 1; }
+  MPI_Comm comm() const { return comm_; }
+
+  void sum(std::vector<std::uint64_t>& values) const;  // in place, over the ranks
+  std::uint64_t sum(std::uint64_t value) const;
+  double max(double value) const;
+  double min(double value) const;
+
+  // Every rank sends send_count[q] items of `bytes` bytes each to rank q from `send`
+  // (grouped by destination, in rank order) and receives into `recv` (grouped by source,
+  // in rank order). recv_count: what each rank sends here (from counts()).
+  void exchange(const void* send, const std::vector<std::uint64_t>& send_count, void* recv,
+                const std::vector<std::uint64_t>& recv_count, std::size_t bytes) const;
+  // The counts the other ranks will send here, from those this rank sends them.
+  std::vector<std::uint64_t> counts(const std::vector<std::uint64_t>& send_count) const;
+
+ private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int rank_ = 0, size_ = 1;
+};
+
+}  // namespace sphdem

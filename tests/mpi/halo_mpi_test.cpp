@@ -1,0 +1,179 @@
+// The decomposition on real ranks (Cornerstone's test, sphexa-org/sphexa domain_nranks):
+// every rank builds the same seeded global set of fluid-like particles with global ids
+// and keeps an arbitrary slice; the weights are summed over the ranks, the curve cut,
+// the particles migrated to their owners and the halo built. Then, summed by global id,
+// each particle's neighbours within the reach (owned and copies) equal a brute-force
+// count over the whole set and every periodic image, exactly; a field filled into the
+// copies equals its owner's; and the reverse scatter brings each copy's integer share back.
+//
+//   mpirun -np R halo_mpi_test R     (the test fails unless it got R ranks)
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <random>
+#include <vector>
+
+#include "domain/rank_comm.hpp"
+#include "domain/rank_halo.hpp"
+#include "domain/sfc_grid.hpp"
+#include "domain/sfc_partition.hpp"
+
+namespace sphdem {
+namespace {
+
+int g_expected_ranks = 0;
+
+// Positions, a global id and one more field: the least a registry needs.
+struct Points {
+  std::vector<double> x, y, z;
+  std::vector<std::int64_t> id;
+  std::vector<double> load;
+  std::size_t n_owned = 0;
+  std::size_t size() const { return x.size(); }
+  template <class F>
+  void for_each_field(F&& f) {
+    f(FieldInfo{"x", kState | kPosition}, x);
+    f(FieldInfo{"y", kState | kPosition}, y);
+    f(FieldInfo{"z", kState | kPosition}, z);
+    f(FieldInfo{"id", kState | kConstant}, id);
+    f(FieldInfo{"load", kState}, load);
+  }
+  void resize(std::size_t n) {
+    for_each_field([n](const FieldInfo&, auto& v) { v.resize(n); });
+  }
+};
+
+struct Setup {
+  Box box;
+  double reach, min_cell;
+  int n;
+};
+
+// The global set: denser at the bottom (a settling bed), seeded, the same on every rank.
+std::vector<std::array<double, 3>> global_set(const Setup& s, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::array<double, 3>> p(s.n);
+  for (auto& q : p)
+    for (int d = 0; d < 3; ++d)
+      q[d] = s.box.lo[d] + s.box.length(d) * (d == 2 ? u(rng) * u(rng) : u(rng));
+  return p;
+}
+
+void run_case(const Setup& s, unsigned seed) {
+  const RankComm comm;
+  ASSERT_EQ(comm.size(), g_expected_ranks) << "the launcher started other rank counts";
+  const int R = comm.size(), me = comm.rank();
+  const auto all = global_set(s, seed);
+  Points p;
+  const std::size_t lo = std::size_t(s.n) * me / R, hi = std::size_t(s.n) * (me + 1) / R;
+  p.resize(hi - lo);
+  p.n_owned = hi - lo;
+  for (std::size_t i = lo; i < hi; ++i) {
+    p.x[i - lo] = all[i][0];
+    p.y[i - lo] = all[i][1];
+    p.z[i - lo] = all[i][2];
+    p.id[i - lo] = static_cast<std::int64_t>(i);
+    p.load[i - lo] = 1.0 + static_cast<double>(i % 7);
+  }
+  const SfcGrid grid(s.box, s.min_cell);
+  std::vector<std::uint64_t> w(grid.cell_count(), 0);  // work: one per particle here
+  for (std::size_t i = 0; i < p.n_owned; ++i) ++w[grid.index(grid.cell_of(p.x[i], p.y[i], p.z[i]))];
+  comm.sum(w);
+  const SfcPartition part = partition_curve(grid, w, R);
+  std::vector<int> dest(p.n_owned);
+  for (std::size_t i = 0; i < p.n_owned; ++i)
+    dest[i] = part.owner(grid, grid.cell_of(p.x[i], p.y[i], p.z[i]));
+  migrate(comm, p, dest);
+  // each particle once, on the rank that owns its cell
+  EXPECT_EQ(comm.sum(p.n_owned), std::uint64_t(s.n));
+  for (std::size_t i = 0; i < p.n_owned; ++i)
+    ASSERT_EQ(part.owner(grid, grid.cell_of(p.x[i], p.y[i], p.z[i])), me);
+  std::vector<std::uint64_t> seen(s.n, 0);
+  for (std::size_t i = 0; i < p.n_owned; ++i) ++seen[p.id[i]];
+  comm.sum(seen);
+  for (int i = 0; i < s.n; ++i) ASSERT_EQ(seen[i], 1u) << "id " << i;
+  // the halo
+  std::array<int, 3> k{};
+  for (int d = 0; d < 3; ++d) k[d] = static_cast<int>(std::ceil(s.reach / grid.cell_size(d)));
+  RankHalo halo;
+  halo.build(comm, grid, part, k, p.x.data(), p.y.data(), p.z.data(), p.n_owned);
+  p.resize(p.n_owned + halo.n_ghost());
+  halo.fill_positions(comm, p.x.data(), p.y.data(), p.z.data());
+  halo.fill(comm, p.id);
+  halo.fill(comm, p.load);
+  // neighbours of each owned particle among owned and copies, by global id
+  std::vector<std::uint64_t> count(s.n, 0);
+  for (std::size_t i = 0; i < p.n_owned; ++i)
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      if (j == i) continue;
+      const double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
+      count[p.id[i]] += dx * dx + dy * dy + dz * dz <= s.reach * s.reach;
+    }
+  comm.sum(count);
+  // brute force over the whole set and every image (on every rank: cheap at this size)
+  for (int i = 0; i < s.n; ++i) {
+    std::uint64_t want = 0;
+    for (int j = 0; j < s.n; ++j)
+      for (int sx = -1; sx <= 1; ++sx)
+        for (int sy = -1; sy <= 1; ++sy)
+          for (int sz = -1; sz <= 1; ++sz) {
+            const int sh[3] = {sx, sy, sz};
+            bool ok = !(i == j && sx == 0 && sy == 0 && sz == 0);
+            double r2 = 0;
+            for (int d = 0; d < 3; ++d) {
+              ok = ok && (s.box.periodic[d] || sh[d] == 0);
+              const double dd = all[i][d] - (all[j][d] + sh[d] * s.box.length(d));
+              r2 += dd * dd;
+            }
+            want += ok && r2 <= s.reach * s.reach;
+          }
+    ASSERT_EQ(count[i], want) << "particle " << i << " on " << R << " ranks";
+  }
+  // copies hold their owner's fields; the reverse scatter returns one share per copy
+  for (std::size_t g = p.n_owned; g < p.size(); ++g)
+    ASSERT_EQ(p.load[g], 1.0 + static_cast<double>(p.id[g] % 7));
+  std::vector<double> share(p.size(), 0.0);
+  for (std::size_t g = p.n_owned; g < p.size(); ++g) share[g] = 1.0;
+  halo.add_to_sources(comm, share.data(), 1);
+  std::vector<std::uint64_t> copies(s.n, 0), returned(s.n, 0);
+  for (std::size_t g = p.n_owned; g < p.size(); ++g) ++copies[p.id[g]];
+  for (std::size_t i = 0; i < p.n_owned; ++i) returned[p.id[i]] = std::uint64_t(share[i]);
+  comm.sum(copies);
+  comm.sum(returned);
+  EXPECT_EQ(returned, copies);
+  EXPECT_GT(comm.sum(halo.n_ghost()), 0u);
+}
+
+TEST(RanksHalo, ColumnPeriodicInXY) {
+  run_case({{{0, 0, 0}, {0.2, 0.2, 1.0}, {true, true, false}}, 0.07, 0.035, 600}, 5);
+}
+
+TEST(RanksHalo, NarrowColumnReachOverHalfItsWidth) {
+  run_case({{{0, 0, 0}, {0.05, 0.05, 0.4}, {true, true, false}}, 0.03, 0.015, 500}, 6);
+}
+
+TEST(RanksHalo, PeriodicCube) {
+  run_case({{{0, 0, 0}, {0.3, 0.3, 0.3}, {true, true, true}}, 0.06, 0.06, 500}, 7);
+}
+
+}  // namespace
+}  // namespace sphdem
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  sphdem::g_expected_ranks = argc > 1 ? std::atoi(argv[1]) : 1;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank != 0) {  // one rank's report
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  int failed = RUN_ALL_TESTS() != 0, any = 0;
+  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Finalize();
+  return any;
+}
