@@ -49,6 +49,10 @@ class RankHalo {
 
  private:
   std::size_t n_owned_ = 0, n_ghost_ = 0;
+  // the cells sent, for the cuts and reach they were made for (remade when either changes)
+  std::vector<HaloSend> sends_;
+  std::vector<std::uint32_t> sends_first_;
+  std::array<int, 3> sends_reach_{};
   std::vector<std::uint32_t> send_index_;  // owned particles sent, grouped by rank
   std::vector<std::uint64_t> send_count_, recv_count_;
   std::vector<double> shift_;           // three per copy: the image in metres
