@@ -104,13 +104,12 @@ int main(int argc, char** argv) {
     double t0 = MPI_Wtime();
     sphdem::migrate(comm, p, dest);
     const double t_migrate = comm.max(MPI_Wtime() - t0);
-    const std::array<int, 3> k{2, 2, 2};
     sphdem::RankHalo halo;
     std::vector<double> t_build;
     for (int r = 0; r < 5; ++r) {
       MPI_Barrier(comm.comm());
       t0 = MPI_Wtime();
-      halo.build(comm, grid, part, k, p.x.data(), p.y.data(), p.z.data(), p.n_owned);
+      halo.build(comm, grid, part, reach, p.x.data(), p.y.data(), p.z.data(), p.n_owned);
       t_build.push_back(comm.max(MPI_Wtime() - t0));
     }
     const std::size_t total = p.n_owned + halo.n_ghost();

@@ -1,13 +1,32 @@
 #include "domain/rank_halo.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sphdem {
 
+namespace {
+
+// The squared distance from a point to a cell's box.
+double distance2_to_cell(const SfcGrid& grid, std::uint32_t cell, const double p[3]) {
+  const std::array<int, 3> c = grid.cell(cell);
+  double r2 = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    const double lo = grid.box().lo[d] + c[d] * grid.cell_size(d), hi = lo + grid.cell_size(d);
+    const double out = p[d] < lo ? lo - p[d] : p[d] > hi ? p[d] - hi : 0.0;
+    r2 += out * out;
+  }
+  return r2;
+}
+
+}  // namespace
+
 void RankHalo::build(const RankComm& comm, const SfcGrid& grid, const SfcPartition& part,
-                     const std::array<int, 3>& reach, const double* x, const double* y,
-                     const double* z, std::size_t n_owned) {
+                     double reach_m, const double* x, const double* y, const double* z,
+                     std::size_t n_owned) {
   n_owned_ = n_owned;
+  std::array<int, 3> reach{};
+  for (int d = 0; d < 3; ++d) reach[d] = static_cast<int>(std::ceil(reach_m / grid.cell_size(d)));
   // the owned particles of each cell, in index order
   const std::size_t cells = grid.cell_count();
   std::vector<std::uint32_t> start(cells + 1, 0), cell_of(n_owned);
@@ -29,12 +48,21 @@ void RankHalo::build(const RankComm& comm, const SfcGrid& grid, const SfcPartiti
   send_count_.assign(comm.size(), 0);
   std::vector<double> send_shift;
   const Box& box = grid.box();
+  const double reach2 = reach_m * reach_m;
   for (const HaloSend& s : sends) {
+    double shift[3];
+    for (int d = 0; d < 3; ++d) shift[d] = s.image[d] * box.length(d);
     for (std::uint32_t k = start[s.cell]; k < start[s.cell + 1]; ++k) {
-      send_index_.push_back(members[k]);
-      for (int d = 0; d < 3; ++d) send_shift.push_back(s.image[d] * box.length(d));
+      const std::uint32_t i = members[k];
+      const double p[3] = {x[i] + shift[0], y[i] + shift[1], z[i] + shift[2]};
+      bool needed = false;  // within the reach of one of the receiver's cells
+      for (std::size_t t = 0; !needed && t < s.targets.size(); ++t)
+        needed = distance2_to_cell(grid, s.targets[t], p) <= reach2;
+      if (!needed) continue;
+      send_index_.push_back(i);
+      send_shift.insert(send_shift.end(), shift, shift + 3);
+      ++send_count_[s.rank];
     }
-    send_count_[s.rank] += start[s.cell + 1] - start[s.cell];
   }
   recv_count_ = comm.counts(send_count_);
   n_ghost_ = 0;

@@ -25,11 +25,11 @@ void migrate(const RankComm& comm, Particles& p, const std::vector<int>& dest);
 
 class RankHalo {
  public:
-  // The copies this rank sends, from its owned positions (reach in cells per axis: a
-  // pair within reach * cell size along each axis is complete), and the count it gets.
-  void build(const RankComm& comm, const SfcGrid& grid, const SfcPartition& part,
-             const std::array<int, 3>& reach, const double* x, const double* y, const double* z,
-             std::size_t n_owned);
+  // The copies this rank sends, from its owned positions, and the count it gets: every
+  // owned particle within `reach` (m) of a cell another rank owns (or of its own cells
+  // across a periodic face), so that every pair within the reach is complete.
+  void build(const RankComm& comm, const SfcGrid& grid, const SfcPartition& part, double reach,
+             const double* x, const double* y, const double* z, std::size_t n_owned);
   std::size_t n_owned() const { return n_owned_; }
   std::size_t n_ghost() const { return n_ghost_; }
   std::size_t n_sent() const { return send_index_.size(); }

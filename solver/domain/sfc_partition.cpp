@@ -98,12 +98,22 @@ std::vector<HaloSend> halo_sends(const SfcGrid& grid, const SfcPartition& part, 
           // q's cell t sees cell c across -wraps periodic lengths
           const std::array<int, 3> image{-wraps[0], -wraps[1], -wraps[2]};
           if (q == rank && image == std::array<int, 3>{0, 0, 0}) continue;
-          sends.push_back(HaloSend{index, q, image});
+          sends.push_back(HaloSend{index, q, image, {static_cast<std::uint32_t>(grid.index(t))}});
         }
   }
-  std::sort(sends.begin(), sends.end());
-  sends.erase(std::unique(sends.begin(), sends.end()), sends.end());
-  return sends;
+  std::sort(sends.begin(), sends.end(), [](const HaloSend& a, const HaloSend& b) {
+    return a < b || (a == b && a.targets < b.targets);
+  });
+  std::vector<HaloSend> merged;  // one entry per (rank, cell, image), its targets in order
+  for (HaloSend& s : sends) {
+    if (!merged.empty() && merged.back() == s) {
+      if (merged.back().targets.back() != s.targets[0])
+        merged.back().targets.push_back(s.targets[0]);
+    } else {
+      merged.push_back(std::move(s));
+    }
+  }
+  return merged;
 }
 
 }  // namespace sphdem

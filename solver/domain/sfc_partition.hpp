@@ -38,11 +38,13 @@ std::vector<std::uint64_t> rank_weights(const SfcGrid& grid, const SfcPartition&
 double load_imbalance(const std::vector<std::uint64_t>& rank_weight);
 
 // One cell's particles sent as halo copies to `rank`, shifted there by `image` box lengths
-// per axis (0 on a bounded axis).
+// per axis (0 on a bounded axis); `targets` are the receiver's cells within the reach
+// (the particles sent can be limited to those within the reach of one of them).
 struct HaloSend {
   std::uint32_t cell = 0;
   int rank = 0;
   std::array<int, 3> image{};
+  std::vector<std::uint32_t> targets;  // (not part of the order or equality)
   bool operator<(const HaloSend& o) const;
   bool operator==(const HaloSend& o) const {
     return cell == o.cell && rank == o.rank && image == o.image;

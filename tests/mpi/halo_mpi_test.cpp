@@ -96,10 +96,8 @@ void run_case(const Setup& s, unsigned seed) {
   comm.sum(seen);
   for (int i = 0; i < s.n; ++i) ASSERT_EQ(seen[i], 1u) << "id " << i;
   // the halo
-  std::array<int, 3> k{};
-  for (int d = 0; d < 3; ++d) k[d] = static_cast<int>(std::ceil(s.reach / grid.cell_size(d)));
   RankHalo halo;
-  halo.build(comm, grid, part, k, p.x.data(), p.y.data(), p.z.data(), p.n_owned);
+  halo.build(comm, grid, part, s.reach, p.x.data(), p.y.data(), p.z.data(), p.n_owned);
   p.resize(p.n_owned + halo.n_ghost());
   halo.fill_positions(comm, p.x.data(), p.y.data(), p.z.data());
   halo.fill(comm, p.id);
