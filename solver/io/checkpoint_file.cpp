@@ -9,6 +9,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "domain/rank_comm.hpp"
+
 namespace sphdem {
 
 namespace {
@@ -75,20 +77,32 @@ bool entry_type_of_stored(hid_t type, EntryType& out) {
   }
 }
 
+uLong crc_of_bytes(uLong c, const void* data, std::size_t bytes);
+uLong entry_crc_head(const std::string& name, EntryType type);
+
 std::uint32_t entry_crc(const std::string& name, EntryType type, const void* data,
                         std::size_t bytes) {
-  uLong c = crc32(0L, Z_NULL, 0);
-  c = crc32(c, reinterpret_cast<const Bytef*>(name.data()), static_cast<uInt>(name.size()));
-  const unsigned char t = static_cast<unsigned char>(type);
-  c = crc32(c, &t, 1);
+  return static_cast<std::uint32_t>(crc_of_bytes(entry_crc_head(name, type), data, bytes));
+}
+
+// The CRC-32 of bytes, in pieces of at most 1 GiB (crc32 takes an unsigned int), from c.
+uLong crc_of_bytes(uLong c, const void* data, std::size_t bytes) {
   const auto* p = static_cast<const Bytef*>(data);
-  while (bytes > 0) {  // crc32 takes at most 4 GiB at a time
+  while (bytes > 0) {
     const std::size_t chunk = std::min<std::size_t>(bytes, 1u << 30);
     c = crc32(c, p, static_cast<uInt>(chunk));
     p += chunk;
     bytes -= chunk;
   }
-  return static_cast<std::uint32_t>(c);
+  return c;
+}
+
+// The CRC-32 of an entry's name and type: where its bytes' CRC starts.
+uLong entry_crc_head(const std::string& name, EntryType type) {
+  uLong c = crc32(0L, Z_NULL, 0);
+  c = crc32(c, reinterpret_cast<const Bytef*>(name.data()), static_cast<uInt>(name.size()));
+  const unsigned char t = static_cast<unsigned char>(type);
+  return crc32(c, &t, 1);
 }
 
 std::uint32_t combined_crc(const std::map<std::string, std::uint32_t>& crcs) {
@@ -135,6 +149,7 @@ void quiet_hdf5() {
 // (HDF5 1.10 crashes at exit flushing such a file again).
 CheckpointWriter::CheckpointWriter(std::string path) : path_(std::move(path)) {
   quiet_hdf5();
+  if (path_.empty()) return;  // the parallel constructor opens the file itself
   const int probe = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (probe < 0) throw CheckpointError("cannot create " + path_ + ": " + std::strerror(errno));
   ::close(probe);
@@ -143,6 +158,23 @@ CheckpointWriter::CheckpointWriter(std::string path) : path_(std::move(path)) {
   file_ = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
   H5Pclose(fapl);
   if (file_ < 0) throw CheckpointError("cannot create " + path_ + ": " + hdf5_reason());
+}
+
+// With several ranks: one file opened by all of them through MPI-IO (parallel HDF5).
+CheckpointWriter::CheckpointWriter(std::string path, const RankComm& comm)
+    : CheckpointWriter(comm.parallel() ? std::string() : std::move(path)) {
+  if (!comm.parallel()) return;
+  // (the delegated constructor made nothing for an empty path)
+  path_ = std::move(path);
+  comm_ = &comm;
+  const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+  H5Pset_fapl_mpio(fapl, comm.comm(), MPI_INFO_NULL);
+  file_ = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  H5Pclose(fapl);
+  const std::string reason = file_ < 0 ? hdf5_reason() : "";
+  if (comm.max(file_ < 0 ? 1.0 : 0.0) > 0.0)
+    throw CheckpointError("cannot create " + path_ + " on " + std::to_string(comm.size()) +
+                          " ranks: " + (reason.empty() ? "failed on another rank" : reason));
 }
 
 CheckpointWriter::~CheckpointWriter() {
@@ -161,13 +193,69 @@ void CheckpointWriter::put(const std::string& name, EntryType type, const void* 
       H5Dcreate2(file_, name.c_str(), native_type(type), space, links, H5P_DEFAULT, H5P_DEFAULT);
   H5Pclose(links);
   herr_t status = set < 0 ? -1 : 0;
-  if (set >= 0 && n > 0)
+  const bool writes = !comm_ || comm_->rank() == 0;  // ranks: the same data, rank 0 writes it
+  if (set >= 0 && n > 0 && writes)
     status = H5Dwrite(set, native_type(type), H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   const std::string reason = status < 0 ? hdf5_reason() : "";
   if (set >= 0) H5Dclose(set);
   H5Sclose(space);
-  if (status < 0) throw CheckpointError("cannot write " + path_ + " ('" + name + "'): " + reason);
+  if (comm_ && comm_->max(status < 0 ? 1.0 : 0.0) > 0.0 && status >= 0) status = -1;
+  if (status < 0)
+    throw CheckpointError("cannot write " + path_ + " ('" + name +
+                          "'): " + (reason.empty() ? "failed on another rank" : reason));
   crcs_[name] = entry_crc(name, type, data, n * size);
+}
+
+void CheckpointWriter::put_slice(const std::string& name, EntryType type, const void* data,
+                                 std::size_t n, std::size_t size) {
+  if (!comm_) return put(name, type, data, n, size);
+  if (file_ < 0) throw CheckpointError(path_ + ": written after finish()");
+  if (crcs_.count(name)) throw CheckpointError(path_ + ": entry '" + name + "' written twice");
+  const RankComm& comm = *comm_;
+  const int R = comm.size(), me = comm.rank();
+  std::vector<std::uint64_t> count(R, 0), crc(R, 0);
+  count[me] = n;
+  crc[me] = crc_of_bytes(crc32(0L, Z_NULL, 0), data, n * size);
+  comm.sum(count);
+  comm.sum(crc);
+  std::uint64_t offset = 0, total = 0;
+  for (int r = 0; r < R; ++r) {
+    if (r < me) offset += count[r];
+    total += count[r];
+  }
+  const hsize_t dims[1] = {total}, start[1] = {offset}, block[1] = {n},
+                one[1] = {std::max<hsize_t>(n, 1)};
+  const hid_t file_space = H5Screate_simple(1, dims, nullptr);
+  const hid_t links = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(links, 1);
+  const hid_t set = H5Dcreate2(file_, name.c_str(), native_type(type), file_space, links,
+                               H5P_DEFAULT, H5P_DEFAULT);
+  H5Pclose(links);
+  const hid_t mem_space = H5Screate_simple(1, one, nullptr);
+  if (n > 0) {
+    H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, block, nullptr);
+  } else {
+    H5Sselect_none(file_space);
+    H5Sselect_none(mem_space);
+  }
+  const hid_t xfer = H5Pcreate(H5P_DATASET_XFER);
+  H5Pset_dxpl_mpio(xfer, H5FD_MPIO_COLLECTIVE);
+  herr_t status = set < 0 ? -1 : 0;
+  if (set >= 0 && total > 0)
+    status = H5Dwrite(set, native_type(type), mem_space, file_space, xfer, data);
+  const std::string reason = status < 0 ? hdf5_reason() : "";
+  H5Pclose(xfer);
+  H5Sclose(mem_space);
+  if (set >= 0) H5Dclose(set);
+  H5Sclose(file_space);
+  if (comm.max(status < 0 ? 1.0 : 0.0) > 0.0)
+    throw CheckpointError("cannot write " + path_ + " ('" + name +
+                          "'): " + (reason.empty() ? "failed on another rank" : reason));
+  // the whole array's CRC: the slices' combined in rank order (as one rank's over all)
+  uLong c = entry_crc_head(name, type);
+  for (int r = 0; r < R; ++r)
+    if (count[r] > 0) c = crc32_combine(c, static_cast<uLong>(crc[r]), count[r] * size);
+  crcs_[name] = static_cast<std::uint32_t>(c);
 }
 
 void CheckpointWriter::text(const std::string& name, const std::string& s) {
@@ -175,6 +263,7 @@ void CheckpointWriter::text(const std::string& name, const std::string& s) {
 }
 
 void CheckpointWriter::finish() {
+  if (comm_) return finish_parallel();
   const std::uint32_t crc = combined_crc(crcs_);
   const hid_t scalar = H5Screate(H5S_SCALAR);
   const hid_t attr =
@@ -221,6 +310,31 @@ void CheckpointWriter::finish() {
   }
   if (::fsync(fd) != 0 || ::close(fd) != 0)
     throw CheckpointError(fmt_error("cannot flush to the disk", path_, errno));
+}
+
+// Every rank writes the same attributes (collective in parallel HDF5); the data are on
+// the disk once the file is flushed (MPI_File_sync) and closed.
+void CheckpointWriter::finish_parallel() {
+  const std::uint32_t crc = combined_crc(crcs_);
+  const hid_t scalar = H5Screate(H5S_SCALAR);
+  const hid_t attr =
+      H5Acreate2(file_, "crc32", H5T_NATIVE_UINT32, scalar, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t status = attr < 0 ? -1 : H5Awrite(attr, H5T_NATIVE_UINT32, &crc);
+  if (attr >= 0) H5Aclose(attr);
+  const hid_t str = H5Tcopy(H5T_C_S1);
+  H5Tset_size(str, std::strlen(kFormat));
+  const hid_t fmt_attr = H5Acreate2(file_, "format", str, scalar, H5P_DEFAULT, H5P_DEFAULT);
+  if (status >= 0) status = fmt_attr < 0 ? -1 : H5Awrite(fmt_attr, str, kFormat);
+  if (fmt_attr >= 0) H5Aclose(fmt_attr);
+  H5Tclose(str);
+  H5Sclose(scalar);
+  if (status >= 0) status = H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  const std::string reason = status < 0 ? hdf5_reason() : "";
+  if (H5Fclose(file_) < 0 && status >= 0) status = -1;
+  file_ = -1;
+  if (comm_->max(status < 0 ? 1.0 : 0.0) > 0.0)
+    throw CheckpointError("cannot finish " + path_ + ": " +
+                          (reason.empty() ? "failed on another rank" : reason));
 }
 
 CheckpointReader::CheckpointReader(const std::string& path) : path_(path) {

@@ -2,12 +2,15 @@
 // One checkpoint file (HDF5): named one-dimensional arrays and scalars, with a CRC-32
 // over every entry, so that a file cut short or damaged is refused when it is read.
 //
-// Layout, ready for the MPI decomposition: each particle field is one global dataset
-// (the ranks' owned particles one after the other; `ranks/fluid_count` and
-// `ranks/sphere_count` say how many each rank wrote), written today by one rank, later
-// by every rank into its own slice of the same file (parallel HDF5). One file per
-// checkpoint keeps the commit one rename, and a run can be resumed on any number of
-// ranks: each reads a slice and the decomposition moves particles to their owners.
+// Layout for the MPI decomposition: each particle field is one global dataset (the
+// ranks' owned particles one after the other, in rank order). On one rank the file is
+// built in memory and written by write() and fsync(); on several (a writer made with a
+// parallel RankComm) every rank writes its slice of each `distributed` entry into the same
+// file with parallel HDF5 (MPI-IO, collective), and the entry's CRC-32 is the ranks'
+// slices' CRCs combined in rank order (zlib's crc32_combine): the same checksum, and the
+// same datasets, as one rank writing the whole array. One file per checkpoint keeps the
+// commit one rename, and a run can be resumed on any number of ranks: each reads a slice
+// and the decomposition moves particles to their owners.
 //
 // Entry names are paths ("fluid/x", "run/time"); a scalar is an array of one. Text
 // (the resolved scene) is an array of bytes. The checksum is the CRC-32 of every
@@ -21,6 +24,8 @@
 #include <vector>
 
 namespace sphdem {
+
+class RankComm;
 
 // A checkpoint that cannot be written or read back (the message names the file and
 // the cause: the disk, a checksum, a missing entry).
@@ -63,6 +68,9 @@ constexpr EntryType entry_type_of<std::uint8_t>() {
 class CheckpointWriter {
  public:
   explicit CheckpointWriter(std::string path);
+  // Every rank of `comm` makes the same calls in the same order (collective); with one
+  // rank it is the writer above.
+  CheckpointWriter(std::string path, const RankComm& comm);
   ~CheckpointWriter();  // closes a file not finished (it stays incomplete, unverified)
   CheckpointWriter(const CheckpointWriter&) = delete;
   CheckpointWriter& operator=(const CheckpointWriter&) = delete;
@@ -80,12 +88,26 @@ class CheckpointWriter {
     array(name, &value, 1);
   }
   void text(const std::string& name, const std::string& s);
+  // One global array of which this rank holds the slice `data` of n values; the slices
+  // follow one another in rank order. (`array` and `scalar`: the same on every rank.)
+  template <class T>
+  void distributed(const std::string& name, const T* data, std::size_t n) {
+    put_slice(name, entry_type_of<T>(), data, n, sizeof(T));
+  }
+  template <class T>
+  void distributed(const std::string& name, const std::vector<T>& v, std::size_t n) {
+    distributed(name, v.data(), n);
+  }
   // Writes the checksum, closes the file and flushes it to the disk (fsync).
   void finish();
 
  private:
   void put(const std::string& name, EntryType type, const void* data, std::size_t n,
            std::size_t size);
+  void put_slice(const std::string& name, EntryType type, const void* data, std::size_t n,
+                 std::size_t size);
+  void finish_parallel();
+  const RankComm* comm_ = nullptr;  // set with several ranks: the file is written by all
   std::string path_;
   std::int64_t file_ = -1;
   std::map<std::string, std::uint32_t> crcs_;  // per entry, combined in name order
