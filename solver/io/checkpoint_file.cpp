@@ -117,6 +117,23 @@ std::uint32_t combined_crc(const std::map<std::string, std::uint32_t>& crcs) {
   return static_cast<std::uint32_t>(c);
 }
 
+// The root's checksum and format attributes (collective in parallel HDF5: every rank
+// writes the same).
+herr_t write_root_attributes(hid_t file, std::uint32_t crc) {
+  const hid_t scalar = H5Screate(H5S_SCALAR);
+  const hid_t attr = H5Acreate2(file, "crc32", H5T_NATIVE_UINT32, scalar, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t status = attr < 0 ? -1 : H5Awrite(attr, H5T_NATIVE_UINT32, &crc);
+  if (attr >= 0) H5Aclose(attr);
+  const hid_t str = H5Tcopy(H5T_C_S1);
+  H5Tset_size(str, std::strlen(kFormat));
+  const hid_t fmt_attr = H5Acreate2(file, "format", str, scalar, H5P_DEFAULT, H5P_DEFAULT);
+  if (status >= 0) status = fmt_attr < 0 ? -1 : H5Awrite(fmt_attr, str, kFormat);
+  if (fmt_attr >= 0) H5Aclose(fmt_attr);
+  H5Tclose(str);
+  H5Sclose(scalar);
+  return status;
+}
+
 // The innermost message of HDF5's error stack (for a failed write it carries the
 // system's reason, e.g. "errno = 28, error message = 'No space left on device'").
 std::string hdf5_reason() {
@@ -264,19 +281,7 @@ void CheckpointWriter::text(const std::string& name, const std::string& s) {
 
 void CheckpointWriter::finish() {
   if (comm_) return finish_parallel();
-  const std::uint32_t crc = combined_crc(crcs_);
-  const hid_t scalar = H5Screate(H5S_SCALAR);
-  const hid_t attr =
-      H5Acreate2(file_, "crc32", H5T_NATIVE_UINT32, scalar, H5P_DEFAULT, H5P_DEFAULT);
-  herr_t status = attr < 0 ? -1 : H5Awrite(attr, H5T_NATIVE_UINT32, &crc);
-  if (attr >= 0) H5Aclose(attr);
-  const hid_t str = H5Tcopy(H5T_C_S1);
-  H5Tset_size(str, std::strlen(kFormat));
-  const hid_t fmt_attr = H5Acreate2(file_, "format", str, scalar, H5P_DEFAULT, H5P_DEFAULT);
-  if (status >= 0) status = fmt_attr < 0 ? -1 : H5Awrite(fmt_attr, str, kFormat);
-  if (fmt_attr >= 0) H5Aclose(fmt_attr);
-  H5Tclose(str);
-  H5Sclose(scalar);
+  herr_t status = write_root_attributes(file_, combined_crc(crcs_));
   if (status >= 0) status = H5Fflush(file_, H5F_SCOPE_GLOBAL);
   std::vector<unsigned char> image;
   if (status >= 0) {
@@ -315,19 +320,7 @@ void CheckpointWriter::finish() {
 // Every rank writes the same attributes (collective in parallel HDF5); the data are on
 // the disk once the file is flushed (MPI_File_sync) and closed.
 void CheckpointWriter::finish_parallel() {
-  const std::uint32_t crc = combined_crc(crcs_);
-  const hid_t scalar = H5Screate(H5S_SCALAR);
-  const hid_t attr =
-      H5Acreate2(file_, "crc32", H5T_NATIVE_UINT32, scalar, H5P_DEFAULT, H5P_DEFAULT);
-  herr_t status = attr < 0 ? -1 : H5Awrite(attr, H5T_NATIVE_UINT32, &crc);
-  if (attr >= 0) H5Aclose(attr);
-  const hid_t str = H5Tcopy(H5T_C_S1);
-  H5Tset_size(str, std::strlen(kFormat));
-  const hid_t fmt_attr = H5Acreate2(file_, "format", str, scalar, H5P_DEFAULT, H5P_DEFAULT);
-  if (status >= 0) status = fmt_attr < 0 ? -1 : H5Awrite(fmt_attr, str, kFormat);
-  if (fmt_attr >= 0) H5Aclose(fmt_attr);
-  H5Tclose(str);
-  H5Sclose(scalar);
+  herr_t status = write_root_attributes(file_, combined_crc(crcs_));
   if (status >= 0) status = H5Fflush(file_, H5F_SCOPE_GLOBAL);
   const std::string reason = status < 0 ? hdf5_reason() : "";
   if (H5Fclose(file_) < 0 && status >= 0) status = -1;

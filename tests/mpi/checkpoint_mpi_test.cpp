@@ -16,6 +16,7 @@
 
 #include "domain/rank_comm.hpp"
 #include "io/checkpoint_file.hpp"
+#include "mpi_gtest_main.hpp"
 
 namespace sphdem {
 namespace {
@@ -79,20 +80,7 @@ TEST(RanksCheckpoint, OneFileFromEveryRankReadsBackWhole) {
 }  // namespace sphdem
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  sphdem::g_expected_ranks = argc > 1 ? std::atoi(argv[1]) : 1;
   sphdem::g_work = argc > 2 ? argv[2] : ".";
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank == 0) std::filesystem::create_directories(sphdem::g_work);
-  MPI_Barrier(MPI_COMM_WORLD);
-  if (rank != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  int failed = RUN_ALL_TESTS() != 0, any = 0;
-  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Finalize();
-  return any;
+  std::filesystem::create_directories(sphdem::g_work);  // (every rank: no race, it exists after)
+  return sphdem::run_mpi_gtests(argc, argv, sphdem::g_expected_ranks);
 }

@@ -19,6 +19,7 @@
 #include "domain/rank_halo.hpp"
 #include "domain/sfc_grid.hpp"
 #include "domain/sfc_partition.hpp"
+#include "mpi_gtest_main.hpp"
 
 namespace sphdem {
 namespace {
@@ -161,17 +162,5 @@ TEST(RanksHalo, PeriodicCube) {
 }  // namespace sphdem
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  sphdem::g_expected_ranks = argc > 1 ? std::atoi(argv[1]) : 1;
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank != 0) {  // one rank's report
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  int failed = RUN_ALL_TESTS() != 0, any = 0;
-  MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Finalize();
-  return any;
+  return sphdem::run_mpi_gtests(argc, argv, sphdem::g_expected_ranks);
 }
