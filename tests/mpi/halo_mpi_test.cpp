@@ -13,8 +13,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <random>
+#include <set>
 #include <vector>
 
+#include "dem/history_migration.hpp"
 #include "domain/rank_comm.hpp"
 #include "domain/rank_halo.hpp"
 #include "domain/sfc_grid.hpp"
@@ -46,14 +48,14 @@ struct Points {
   }
 };
 
-struct Setup {
+struct Scenario {
   Box box;
   double reach, min_cell;
   int n;
 };
 
 // The global set: denser at the bottom (a settling bed), seeded, the same on every rank.
-std::vector<std::array<double, 3>> global_set(const Setup& s, unsigned seed) {
+std::vector<std::array<double, 3>> global_set(const Scenario& s, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<std::array<double, 3>> p(s.n);
@@ -63,7 +65,7 @@ std::vector<std::array<double, 3>> global_set(const Setup& s, unsigned seed) {
   return p;
 }
 
-void run_case(const Setup& s, unsigned seed) {
+void run_case(const Scenario& s, unsigned seed) {
   const RankComm comm;
   ASSERT_EQ(comm.size(), g_expected_ranks) << "the launcher started other rank counts";
   const int R = comm.size(), me = comm.rank();
@@ -156,6 +158,62 @@ TEST(RanksHalo, NarrowColumnReachOverHalfItsWidth) {
 
 TEST(RanksHalo, PeriodicCube) {
   run_case({{{0, 0, 0}, {0.3, 0.3, 0.3}, {true, true, true}}, 0.06, 0.06, 500}, 7);
+}
+
+// The contact history follows its spheres: each sphere i carries records (i, i + 1) and
+// (i, wall) whose state encodes i; after the spheres and their records migrate, every
+// record is on the rank that owns its sphere, none is lost or doubled.
+TEST(RanksHalo, ContactHistoryFollowsItsSphere) {
+  const RankComm comm;
+  ASSERT_EQ(comm.size(), g_expected_ranks);
+  const Scenario s{{{0, 0, 0}, {0.2, 0.2, 1.0}, {true, true, false}}, 0.07, 0.035, 600};
+  const int R = comm.size(), me = comm.rank();
+  const auto all = global_set(s, 9);
+  Points p;
+  const std::size_t lo = std::size_t(s.n) * me / R, hi = std::size_t(s.n) * (me + 1) / R;
+  p.resize(hi - lo);
+  p.n_owned = hi - lo;
+  std::vector<ContactHistory::Record> records;
+  for (std::size_t i = lo; i < hi; ++i) {
+    p.x[i - lo] = all[i][0];
+    p.y[i - lo] = all[i][1];
+    p.z[i - lo] = all[i][2];
+    p.id[i - lo] = static_cast<std::int64_t>(i);
+    for (const std::int64_t partner :
+         {static_cast<std::int64_t>(i + 1), ContactHistory::kBottomWall}) {
+      ContactHistory::Record r{static_cast<std::int64_t>(i), partner, {}};
+      r.state.xi[0] = static_cast<double>(i);
+      r.state.mr[2] = static_cast<double>(partner);
+      records.push_back(r);
+    }
+  }
+  ContactHistory history;
+  history.set_keyed(records);
+  const SfcGrid grid(s.box, s.min_cell);
+  std::vector<std::uint64_t> w(grid.cell_count(), 0);
+  for (std::size_t i = 0; i < p.n_owned; ++i) ++w[grid.index(grid.cell_of(p.x[i], p.y[i], p.z[i]))];
+  comm.sum(w);
+  const SfcPartition part = partition_curve(grid, w, R);
+  std::vector<int> dest(p.n_owned);
+  std::vector<std::int64_t> leaving_id;
+  std::vector<int> leaving_dest;
+  for (std::size_t i = 0; i < p.n_owned; ++i) {
+    dest[i] = part.owner(grid, grid.cell_of(p.x[i], p.y[i], p.z[i]));
+    if (dest[i] != me) {
+      leaving_id.push_back(p.id[i]);
+      leaving_dest.push_back(dest[i]);
+    }
+  }
+  migrate(comm, p, dest);
+  migrate_history(comm, history, leaving_id, leaving_dest);
+  std::set<std::int64_t> owned(p.id.begin(), p.id.begin() + p.n_owned);
+  for (const auto& r : history.keyed()) {
+    ASSERT_TRUE(owned.count(r.id)) << "record of sphere " << r.id << " on rank " << me;
+    EXPECT_EQ(r.state.xi[0], static_cast<double>(r.id));
+    EXPECT_EQ(r.state.mr[2], static_cast<double>(r.partner));
+  }
+  EXPECT_EQ(history.keyed().size(), 2 * p.n_owned);
+  EXPECT_EQ(comm.sum(history.keyed().size()), 2u * s.n);
 }
 
 }  // namespace
