@@ -37,7 +37,12 @@ SfcGrid::SfcGrid(const Box& box, double min_cell) : box_(box) {
   if (!(min_cell > 0.0)) throw std::invalid_argument("SfcGrid: the cell size must be > 0");
   int largest = 1;
   for (int d = 0; d < 3; ++d) {
-    n_[d] = std::max(1, static_cast<int>(std::floor(box.length(d) / min_cell)));
+    // a power of two: a range of the curve over a whole 2^b cube is a union of octree
+    // boxes, near a cube (bench/RESULTS.md, session 29: 1.2-1.5 times a cube's ghosts
+    // on other counts, 1.0-1.2 on these)
+    const int fit = std::max(1, static_cast<int>(std::floor(box.length(d) / min_cell)));
+    n_[d] = 1;
+    while (2 * n_[d] <= fit) n_[d] *= 2;
     size_[d] = box.length(d) / n_[d];
     largest = std::max(largest, n_[d]);
   }

@@ -17,7 +17,8 @@ std::uint64_t hilbert_key(std::uint32_t x, std::uint32_t y, std::uint32_t z, int
 
 class SfcGrid {
  public:
-  // Cells of at least min_cell along every axis (one cell where an axis is shorter).
+  // Cells of at least min_cell along every axis (one cell where an axis is shorter), a
+  // power of two of them along each (so up to twice min_cell).
   SfcGrid(const Box& box, double min_cell);
 
   const Box& box() const { return box_; }

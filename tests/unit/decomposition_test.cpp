@@ -41,12 +41,12 @@ TEST(SfcGrid, HilbertKeysVisitEveryCellOnceByFaceSteps) {
 TEST(SfcGrid, CellsCoverTheBoxAndTheCurveEveryCell) {
   Box box{{0, 0, 0}, {0.05, 0.05, 1.0}, {true, true, false}};
   const SfcGrid grid(box, 0.0125);
-  EXPECT_EQ(grid.cells(), (std::array<int, 3>{4, 4, 80}));
-  EXPECT_EQ(grid.curve().size(), 4u * 4 * 80);
+  EXPECT_EQ(grid.cells(), (std::array<int, 3>{4, 4, 64}));  // powers of two
+  EXPECT_EQ(grid.curve().size(), 4u * 4 * 64);
   std::vector<int> seen(grid.cell_count(), 0);
   for (const std::uint32_t i : grid.curve()) ++seen[i];
   EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(grid.cell_count()));
-  EXPECT_EQ(grid.cell_of(-0.001, 0.051, 1.2), (std::array<int, 3>{3, 0, 79}));  // wrapped, clamped
+  EXPECT_EQ(grid.cell_of(-0.001, 0.051, 1.2), (std::array<int, 3>{3, 0, 63}));  // wrapped, clamped
   EXPECT_EQ(grid.cell(grid.index({2, 3, 41})), (std::array<int, 3>{2, 3, 41}));
 }
 
@@ -63,7 +63,7 @@ std::vector<std::uint64_t> bed_weights(const SfcGrid& grid, std::mt19937_64& rng
 
 TEST(SfcPartition, WeightedCutsAreContiguousAndWithinOneCellOfTheMean) {
   Box box{{0, 0, 0}, {0.05, 0.05, 1.0}, {true, true, false}};
-  const SfcGrid grid(box, 0.00625);  // 8 x 8 x 160
+  const SfcGrid grid(box, 0.00625);  // 8 x 8 x 128
   std::mt19937_64 rng(7);
   const std::vector<std::uint64_t> w = bed_weights(grid, rng);
   const std::uint64_t w_max = *std::max_element(w.begin(), w.end());
@@ -92,7 +92,7 @@ TEST(SfcPartition, EqualCellCountsDoNotBalanceABed) {
   const std::vector<std::uint64_t> w = bed_weights(grid, rng);
   const std::vector<std::uint64_t> none(grid.cell_count(), 0);
   const SfcPartition by_count = partition_curve(grid, none, 4);
-  for (int r = 0; r < 4; ++r) EXPECT_EQ(by_count.first[r + 1] - by_count.first[r], 2560u);
+  for (int r = 0; r < 4; ++r) EXPECT_EQ(by_count.first[r + 1] - by_count.first[r], 2048u);
   EXPECT_GT(load_imbalance(rank_weights(grid, by_count, w)), 2.0);
   EXPECT_LT(load_imbalance(rank_weights(grid, partition_curve(grid, w, 4), w)), 1.01);
 }
