@@ -11,12 +11,14 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <set>
 #include <vector>
 
 #include "dem/history_migration.hpp"
+#include "domain/decomposition.hpp"
 #include "domain/rank_comm.hpp"
 #include "domain/rank_halo.hpp"
 #include "domain/sfc_grid.hpp"
@@ -214,6 +216,65 @@ TEST(RanksHalo, ContactHistoryFollowsItsSphere) {
   }
   EXPECT_EQ(history.keyed().size(), 2 * p.n_owned);
   EXPECT_EQ(comm.sum(history.keyed().size()), 2u * s.n);
+}
+
+// Load balance as a suspension settles: the work per particle grows in the bed at the
+// bottom (8), stays in the suspension (3) and falls in the clear liquid above it (1) while
+// the bed rises and the suspension's top falls. Each epoch the ranks count their owned
+// particles' work, balance() recuts where max/mean passes 1.10 and the particles migrate:
+// after it every epoch's load is within 1.10; the cuts of the start, kept as a control,
+// drift past it.
+TEST(RanksHalo, BalanceFollowsASettlingLoad) {
+  const RankComm comm;
+  ASSERT_EQ(comm.size(), g_expected_ranks);
+  const Scenario s{{{0, 0, 0}, {0.2, 0.2, 1.0}, {true, true, false}}, 0.05, 0.05, 3000};
+  const int R = comm.size(), me = comm.rank();
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::array<double, 3>> all(s.n);
+  for (auto& q : all) q = {0.2 * u(rng), 0.2 * u(rng), u(rng)};
+  Points p;
+  const std::size_t lo = std::size_t(s.n) * me / R, hi = std::size_t(s.n) * (me + 1) / R;
+  p.resize(hi - lo);
+  p.n_owned = hi - lo;
+  for (std::size_t i = lo; i < hi; ++i) {
+    p.x[i - lo] = all[i][0];
+    p.y[i - lo] = all[i][1];
+    p.z[i - lo] = all[i][2];
+    p.id[i - lo] = static_cast<std::int64_t>(i);
+  }
+  Decomposition dec(comm, s.box, s.min_cell);
+  const auto work = [](double z, int epoch) -> std::uint64_t {
+    const double bed = 0.03 * epoch, top = 1.0 - 0.08 * epoch;
+    return z < bed ? 8 : z < top ? 3 : 1;
+  };
+  const auto move_to_owners = [&] {
+    std::vector<int> dest(p.n_owned);
+    for (std::size_t i = 0; i < p.n_owned; ++i) dest[i] = dec.owner(p.x[i], p.y[i], p.z[i]);
+    migrate(comm, p, dest);
+  };
+  SfcPartition start;
+  double static_worst = 1.0;
+  for (int epoch = 0; epoch < 10; ++epoch) {
+    for (std::size_t i = 0; i < p.n_owned; ++i)
+      dec.count(p.x[i], p.y[i], p.z[i], work(p.z[i], epoch));
+    dec.balance(1.10, /*force=*/epoch == 0);
+    move_to_owners();
+    EXPECT_LE(dec.imbalance_after(), 1.10) << "epoch " << epoch;
+    std::vector<std::uint64_t> w(dec.grid().cell_count(), 0);  // the same load, from the global set
+    for (const auto& q : all)
+      w[dec.grid().index(dec.grid().cell_of(q[0], q[1], q[2]))] += work(q[2], epoch);
+    EXPECT_EQ(load_imbalance(rank_weights(dec.grid(), dec.partition(), w)), dec.imbalance_after());
+    if (epoch == 0) start = dec.partition();
+    const double fixed = load_imbalance(rank_weights(dec.grid(), start, w));
+    static_worst = std::max(static_worst, fixed);
+    if (me == 0)
+      std::printf("epoch %d: max/mean %.3f before, %.3f after balance; start's cuts %.3f\n", epoch,
+                  dec.imbalance_before(), dec.imbalance_after(), fixed);
+    for (std::size_t i = 0; i < p.n_owned; ++i) ASSERT_EQ(dec.owner(p.x[i], p.y[i], p.z[i]), me);
+  }
+  EXPECT_EQ(comm.sum(p.n_owned), std::uint64_t(s.n));
+  if (R > 1) EXPECT_GT(static_worst, 1.10);  // the control drifts
 }
 
 }  // namespace
