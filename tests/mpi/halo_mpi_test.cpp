@@ -67,13 +67,11 @@ std::vector<std::array<double, 3>> global_set(const Scenario& s, unsigned seed) 
   return p;
 }
 
-void run_case(const Scenario& s, unsigned seed) {
-  const RankComm comm;
-  ASSERT_EQ(comm.size(), g_expected_ranks) << "the launcher started other rank counts";
-  const int R = comm.size(), me = comm.rank();
-  const auto all = global_set(s, seed);
+// This rank's slice of the global set (an arbitrary one: not by position), with ids and
+// a field of known values.
+Points slice_of(const std::vector<std::array<double, 3>>& all, int R, int me) {
   Points p;
-  const std::size_t lo = std::size_t(s.n) * me / R, hi = std::size_t(s.n) * (me + 1) / R;
+  const std::size_t n = all.size(), lo = n * me / R, hi = n * (me + 1) / R;
   p.resize(hi - lo);
   p.n_owned = hi - lo;
   for (std::size_t i = lo; i < hi; ++i) {
@@ -83,6 +81,15 @@ void run_case(const Scenario& s, unsigned seed) {
     p.id[i - lo] = static_cast<std::int64_t>(i);
     p.load[i - lo] = 1.0 + static_cast<double>(i % 7);
   }
+  return p;
+}
+
+void run_case(const Scenario& s, unsigned seed) {
+  const RankComm comm;
+  ASSERT_EQ(comm.size(), g_expected_ranks) << "the launcher started other rank counts";
+  const int R = comm.size(), me = comm.rank();
+  const auto all = global_set(s, seed);
+  Points p = slice_of(all, R, me);
   const SfcGrid grid(s.box, s.min_cell);
   std::vector<std::uint64_t> w(grid.cell_count(), 0);  // work: one per particle here
   for (std::size_t i = 0; i < p.n_owned; ++i) ++w[grid.index(grid.cell_of(p.x[i], p.y[i], p.z[i]))];
@@ -171,19 +178,12 @@ TEST(RanksHalo, ContactHistoryFollowsItsSphere) {
   const Scenario s{{{0, 0, 0}, {0.2, 0.2, 1.0}, {true, true, false}}, 0.07, 0.035, 600};
   const int R = comm.size(), me = comm.rank();
   const auto all = global_set(s, 9);
-  Points p;
-  const std::size_t lo = std::size_t(s.n) * me / R, hi = std::size_t(s.n) * (me + 1) / R;
-  p.resize(hi - lo);
-  p.n_owned = hi - lo;
+  Points p = slice_of(all, R, me);
   std::vector<ContactHistory::Record> records;
-  for (std::size_t i = lo; i < hi; ++i) {
-    p.x[i - lo] = all[i][0];
-    p.y[i - lo] = all[i][1];
-    p.z[i - lo] = all[i][2];
-    p.id[i - lo] = static_cast<std::int64_t>(i);
-    for (const std::int64_t partner :
-         {static_cast<std::int64_t>(i + 1), ContactHistory::kBottomWall}) {
-      ContactHistory::Record r{static_cast<std::int64_t>(i), partner, {}};
+  for (std::size_t k = 0; k < p.n_owned; ++k) {
+    const std::int64_t i = p.id[k];
+    for (const std::int64_t partner : {i + 1, ContactHistory::kBottomWall}) {
+      ContactHistory::Record r{i, partner, {}};
       r.state.xi[0] = static_cast<double>(i);
       r.state.mr[2] = static_cast<double>(partner);
       records.push_back(r);
@@ -233,16 +233,7 @@ TEST(RanksHalo, BalanceFollowsASettlingLoad) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<std::array<double, 3>> all(s.n);
   for (auto& q : all) q = {0.2 * u(rng), 0.2 * u(rng), u(rng)};
-  Points p;
-  const std::size_t lo = std::size_t(s.n) * me / R, hi = std::size_t(s.n) * (me + 1) / R;
-  p.resize(hi - lo);
-  p.n_owned = hi - lo;
-  for (std::size_t i = lo; i < hi; ++i) {
-    p.x[i - lo] = all[i][0];
-    p.y[i - lo] = all[i][1];
-    p.z[i - lo] = all[i][2];
-    p.id[i - lo] = static_cast<std::int64_t>(i);
-  }
+  Points p = slice_of(all, R, me);
   Decomposition dec(comm, s.box, s.min_cell);
   const auto work = [](double z, int epoch) -> std::uint64_t {
     const double bed = 0.03 * epoch, top = 1.0 - 0.08 * epoch;
