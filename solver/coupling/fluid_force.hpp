@@ -30,13 +30,13 @@ struct FluidForceWindow {
   bool variational = false;
 };
 
-// What the spheres' fluid force passes leave behind: each owned sphere's drag coefficient
-// (the drag exchange's gains, coupling/drag_exchange.hpp) and the largest relaxation rate
-// (which bounds the next half step's sub-step), with the lanes the passes run in.
 // Spheres per block of a force pass: a block's fluid forces are still in the cache when
 // its sphere rows use them.
 inline constexpr std::size_t kSphereBlock = 256;
 
+// What the spheres' fluid force passes leave behind: each owned sphere's drag coefficient
+// (the drag exchange's gains, coupling/drag_exchange.hpp) and the largest relaxation rate
+// (which bounds the next half step's sub-step), with the lanes the passes run in.
 struct SphereDrag {
   std::vector<double> c;
   double rate_max = 0;  // 0 before the first pass and without fluid

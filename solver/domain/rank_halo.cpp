@@ -38,8 +38,8 @@ void RankHalo::build(const RankComm& comm, const SfcGrid& grid, const SfcPartiti
   std::vector<std::uint32_t> members(n_owned), fill_at(start.begin(), start.end() - 1);
   for (std::size_t i = 0; i < n_owned; ++i) members[fill_at[cell_of[i]]++] = std::uint32_t(i);
 
-  if (sends_first_ != part.first || sends_reach_ != reach || sends_.empty()) {
-    sends_ = halo_sends(grid, part, comm.rank(), reach);  // by rank
+  if (sends_first_ != part.first || sends_reach_ != reach) {  // (first build: first is empty)
+    sends_ = halo_sends(grid, part, comm.rank(), reach);      // by rank
     sends_first_ = part.first;
     sends_reach_ = reach;
   }

@@ -165,8 +165,11 @@ void quiet_hdf5() {
 // then one clear error of ours, and HDF5 is never left holding a file it cannot flush
 // (HDF5 1.10 crashes at exit flushing such a file again).
 CheckpointWriter::CheckpointWriter(std::string path) : path_(std::move(path)) {
+  open_in_memory();
+}
+
+void CheckpointWriter::open_in_memory() {
   quiet_hdf5();
-  if (path_.empty()) return;  // the parallel constructor opens the file itself
   const int probe = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (probe < 0) throw CheckpointError("cannot create " + path_ + ": " + std::strerror(errno));
   ::close(probe);
@@ -179,10 +182,12 @@ CheckpointWriter::CheckpointWriter(std::string path) : path_(std::move(path)) {
 
 // With several ranks: one file opened by all of them through MPI-IO (parallel HDF5).
 CheckpointWriter::CheckpointWriter(std::string path, const RankComm& comm)
-    : CheckpointWriter(comm.parallel() ? std::string() : std::move(path)) {
-  if (!comm.parallel()) return;
-  // (the delegated constructor made nothing for an empty path)
-  path_ = std::move(path);
+    : path_(std::move(path)) {
+  if (!comm.parallel()) {
+    open_in_memory();
+    return;
+  }
+  quiet_hdf5();
   comm_ = &comm;
   const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
   H5Pset_fapl_mpio(fapl, comm.comm(), MPI_INFO_NULL);

@@ -102,6 +102,7 @@ class CheckpointWriter {
   void finish();
 
  private:
+  void open_in_memory();  // one rank: the file built in memory, written by finish()
   void put(const std::string& name, EntryType type, const void* data, std::size_t n,
            std::size_t size);
   void put_slice(const std::string& name, EntryType type, const void* data, std::size_t n,
