@@ -72,8 +72,7 @@ TEST(RanksCheckpoint, OneFileFromEveryRankReadsBackWhole) {
   EXPECT_EQ(p.scalar<double>("run/time"), 0.125);
   EXPECT_EQ(p.text("scene/yaml"), "name: ranks\n");
   const CheckpointReader s(serial);
-  for (const char* group : {"fluid/", "run/", "scene/"})
-    EXPECT_EQ(p.names(group), s.names(group));
+  for (const char* group : {"fluid/", "run/", "scene/"}) EXPECT_EQ(p.names(group), s.names(group));
 }
 
 }  // namespace
