@@ -48,6 +48,12 @@ double RankComm::min(double value) const {
   return value;
 }
 
+void RankComm::max(std::vector<double>& values) const {
+  if (!parallel() || values.empty()) return;
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
+                comm_);
+}
+
 std::vector<std::uint64_t> RankComm::counts(const std::vector<std::uint64_t>& send_count) const {
   if (!parallel()) return send_count;
   std::vector<std::uint64_t> recv(size_);

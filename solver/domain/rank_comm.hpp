@@ -25,6 +25,7 @@ class RankComm {
   std::uint64_t sum(std::uint64_t value) const;
   double max(double value) const;
   double min(double value) const;
+  void max(std::vector<double>& values) const;  // in place, element by element
 
   // Every rank sends send_count[q] items of `bytes` bytes each to rank q from `send`
   // (grouped by destination, in rank order) and receives into `recv` (grouped by source,

@@ -23,6 +23,20 @@ namespace sphdem {
 template <class Particles>
 void migrate(const RankComm& comm, Particles& p, const std::vector<int>& dest);
 
+// Every rank holds the same global set: keeps the particles with dest[i] == this rank, in
+// their order (the start of a run, before any migration).
+template <class Particles>
+void keep_share(const RankComm& comm, Particles& p, const std::vector<int>& dest) {
+  std::size_t kept = 0;
+  p.for_each_field([&](const FieldInfo&, auto& v) {
+    kept = 0;
+    for (std::size_t i = 0; i < p.n_owned; ++i)
+      if (dest[i] == comm.rank()) v[kept++] = v[i];
+    v.resize(kept);
+  });
+  p.n_owned = kept;
+}
+
 class RankHalo {
  public:
   // The copies this rank sends, from its owned positions, and the count it gets: every

@@ -30,26 +30,62 @@ namespace {
 constexpr double kFluidSkin = 0.1;
 constexpr double kFluidSphereSkin = 0.2;
 
+// A rebuild on several ranks recuts the curve where the largest rank's counted work passes
+// the mean by more than this (issue 36).
+constexpr double kRebalanceThreshold = 1.10;
+
 DemParticles placed_spheres(const Scene& scene, FluidParticles& fluid) {
   DemParticles spheres;
   place_particles(scene, fluid, spheres);
   return spheres;
 }
 
+void refuse_spheres_on_ranks(const RankComm& comm, const DemParticles& s, const Scene& scene) {
+  if (comm.parallel() && s.n_owned > 0)
+    throw std::runtime_error(fmt::format(
+        "{}: {} spheres on {} ranks: the spheres are not yet decomposed over ranks (issue 36); "
+        "run this scene on one rank (without mpirun)",
+        scene.name, s.n_owned, comm.size()));
+}
+
+// The particle arrays with the state a step keeps from its start (u^n, rho^n), so that a
+// rebuild inside the step migrates them with their particles.
+struct FluidWithStepStart {
+  FluidParticles& f;
+  std::vector<double>&u0x, &u0y, &u0z, &rho0;
+  std::size_t& n_owned;
+  bool in_step;  // the same on every rank: the exchanges below are collective
+  template <class F>
+  void for_each_field(F&& fn) {
+    f.for_each_field(fn);
+    if (!in_step) return;
+    fn(FieldInfo{"u0x", kScratch}, u0x);
+    fn(FieldInfo{"u0y", kScratch}, u0y);
+    fn(FieldInfo{"u0z", kScratch}, u0z);
+    fn(FieldInfo{"rho0", kScratch}, rho0);
+  }
+};
+
 }  // namespace
 
-Simulation::Simulation(const Scene& scene)
+Simulation::Simulation(const Scene& scene, const RankComm& comm)
     : scene_(scene),
+      comm_(comm),
       params_(compile_step_params(scene_)),
-      dem_(params_.box, params_.dem, placed_spheres(scene_, fluid_)) {
+      dem_(params_.box, params_.dem, placed_spheres(scene_, fluid_)),
+      fluid_halo_(comm_) {
+  refuse_spheres_on_ranks(comm_, dem_.spheres(), scene_);
   build_initial_state();
 }
 
-Simulation::Simulation(const Scene& scene, const CheckpointReader& r)
+Simulation::Simulation(const Scene& scene, const CheckpointReader& r, const RankComm& comm)
     : scene_(scene),
+      comm_(comm),
       params_(compile_step_params(scene_)),
       fluid_(read_particle_state<FluidParticles>(r, "fluid/")),
-      dem_(params_.box, params_.dem, DemSubstepper::read_spheres(r)) {
+      dem_(params_.box, params_.dem, DemSubstepper::read_spheres(r)),
+      fluid_halo_(comm_) {
+  refuse_spheres_on_ranks(comm_, dem_.spheres(), scene_);
   dem_.read_state(r);
   time_ = r.scalar<double>("run/time");
   dt_sph_ = r.scalar<double>("run/dt_sph");
@@ -60,6 +96,46 @@ Simulation::Simulation(const Scene& scene, const CheckpointReader& r)
   // The next step re-sorts and rebuilds every list (as the run that wrote it did).
   steps_since_sort_ = sort_interval_ - 1;
   fluid_lists_stale_ = true;
+  if (comm_.parallel()) decompose(cell_size_);  // every rank read the whole file
+}
+
+// Several ranks: the box's Hilbert-ordered cells of at least `cell` (the fluid lists' cell)
+// cut by cell count, and of the global set every rank holds, the share in its cells kept.
+void Simulation::decompose(double cell) {
+  const SfcGrid grid(params_.box, cell);
+  if (grid.cell_count() < static_cast<std::size_t>(comm_.size()))
+    throw std::runtime_error(fmt::format(
+        "{}: {} ranks, but the box cuts into only {} cells of {:.3g} m (2 h + skin): run on at "
+        "most {} ranks, or enlarge the domain",
+        scene_.name, comm_.size(), grid.cell_count(), cell, grid.cell_count()));
+  decomposition_.emplace(comm_, params_.box, cell);
+  FluidParticles& f = fluid_;
+  f.resize(f.n_owned);
+  std::vector<int> dest(f.n_owned);
+  for (std::size_t a = 0; a < f.n_owned; ++a)
+    dest[a] = decomposition_->owner(f.x[a], f.y[a], f.z[a]);
+  keep_share(comm_, f, dest);
+}
+
+// Several ranks, at a rebuild: the work counted since the last one summed, the curve recut
+// where it is out of balance (or when forced), and each particle sent to the rank that owns
+// its cell, with the state the step keeps from its start.
+void Simulation::distribute_fluid() {
+  Decomposition& d = *decomposition_;
+  d.balance(kRebalanceThreshold, force_rebalance_);
+  force_rebalance_ = false;
+  FluidParticles& f = fluid_;
+  std::vector<int> dest(f.n_owned);
+  for (std::size_t a = 0; a < f.n_owned; ++a) dest[a] = d.owner(f.x[a], f.y[a], f.z[a]);
+  FluidWithStepStart moving{f, u0x_, u0y_, u0z_, rho0_, f.n_owned, in_step_};
+  migrate(comm_, moving, dest);
+}
+
+// Whether the fluid lists must be rebuilt before their next use; on ranks, whether any
+// rank's must (a rebuild is collective).
+bool Simulation::lists_stale() const {
+  const bool stale = fluid_lists_stale_ || xr_.size() != fluid_.n_owned;
+  return comm_.parallel() ? comm_.max(stale ? 1.0 : 0.0) > 0.0 : stale;
 }
 
 void Simulation::write_state(CheckpointWriter& w) const {
@@ -85,6 +161,7 @@ std::size_t Simulation::wall_count() const {
 double Simulation::fluid_cutoff() const {
   double hmax = 0;
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) hmax = std::max(hmax, fluid_.h[a]);
+  hmax = comm_.max(hmax);
   if (hmax == 0.0) {  // no fluid (dry DEM): bin at the contact reach instead
     const DemParticles& s = dem_.spheres();
     double rmax = 0;
@@ -107,6 +184,7 @@ void Simulation::build_initial_state() {
     fluid_.inv_h[a] = 1.0 / fluid_.h[a];
     fluid_.eps[a] = 1.0;
   }
+  if (comm_.parallel()) decompose(fluid_cutoff() * (1.0 + kFluidSkin / kernel::kSupport));
   // m/rho = dx^3 for the double smoothing (3.10)
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
     fluid_.rho[a] = p.eos.rho0;
@@ -140,8 +218,13 @@ void Simulation::rebuild_neighbours() {
   sphere_pair_skin_ = kFluidSphereSkin * hmax_at_build_;
   cell_size_ = support + fluid_skin_;
   f.resize(f.n_owned);
-  fluid_halo_.build(box, box.halo_width(support, cell_size_), f.x.data(), f.y.data(), f.z.data(),
-                    f.n_owned);
+  if (decomposition_) {
+    distribute_fluid();
+    fluid_halo_.build(*decomposition_, cell_size_, f.x.data(), f.y.data(), f.z.data(), f.n_owned);
+  } else {
+    fluid_halo_.build(box, box.halo_width(support, cell_size_), f.x.data(), f.y.data(), f.z.data(),
+                      f.n_owned);
+  }
   f.resize(f.n_owned + fluid_halo_.n_ghost());
   fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
   f.for_each_field([&](const FieldInfo& field, auto& v) {
@@ -153,6 +236,10 @@ void Simulation::rebuild_neighbours() {
     list_reach_[a] = kernel::kSupport * f.h[a] + fluid_skin_;
   fluid_pairs_.build_half_within(fluid_cells_, f.x.data(), f.y.data(), f.z.data(), f.n_owned,
                                  list_reach_.data());
+  if (decomposition_)  // the work a rank's cells take: the pairs each particle evaluates
+    for (std::size_t a = 0; a < f.n_owned; ++a)
+      decomposition_->count(f.x[a], f.y[a], f.z[a],
+                            fluid_pairs_.end(a) - fluid_pairs_.begin(a) + 1);
   xr_.assign(f.x.begin(), f.x.begin() + f.n_owned);
   yr_.assign(f.y.begin(), f.y.begin() + f.n_owned);
   zr_.assign(f.z.begin(), f.z.begin() + f.n_owned);
@@ -195,8 +282,10 @@ Simulation::Displacements Simulation::displacements() const {
     const double px = s.x[j] - sxp_[j], py = s.y[j] - syp_[j], pz = s.z[j] - szp_[j];
     dsp2 = std::max(dsp2, px * px + py * py + pz * pz);
   }
-  return {std::sqrt(df2),  std::sqrt(ds2),           std::sqrt(dfp2),
-          std::sqrt(dsp2), kernel::kSupport * grown, kernel::kSupport * pair_grown};
+  std::vector<double> m{df2, ds2, dfp2, dsp2, grown, pair_grown};
+  comm_.max(m);  // every rank the same rebuild decision
+  return {std::sqrt(m[0]), std::sqrt(m[1]),         std::sqrt(m[2]),
+          std::sqrt(m[3]), kernel::kSupport * m[4], kernel::kSupport * m[5]};
 }
 
 // Verlet criteria (the fluid pairs were listed within max(2 h_a, 2 h_b) + skin, the
@@ -218,7 +307,7 @@ Simulation::VerletMargins Simulation::verlet_margins(const Displacements& d) con
 }
 
 Simulation::VerletMargins Simulation::verlet_margins() const {
-  if (fluid_lists_stale_ || xr_.size() != fluid_.n_owned) return {-1.0, -1.0};
+  if (lists_stale()) return {-1.0, -1.0};
   return verlet_margins(displacements());
 }
 
@@ -226,7 +315,7 @@ Simulation::VerletMargins Simulation::verlet_margins() const {
 // refreshed.
 void Simulation::update_neighbours() {
   FluidParticles& f = fluid_;
-  if (fluid_lists_stale_ || xr_.size() != f.n_owned) {
+  if (lists_stale()) {
     rebuild_neighbours();
     return;
   }
@@ -425,13 +514,17 @@ void Simulation::step() {
 void Simulation::advance(bool hold_spheres) {
   FluidParticles& f = fluid_;
   const double dt = dt_sph_;
-  const long n = static_cast<long>(f.n_owned);
+  long n = static_cast<long>(f.n_owned);  // changes where a rebuild migrates
   Lap lap{timers_};
   u0x_.resize(n);
   u0y_.resize(n);
   u0z_.resize(n);
   rho0_.resize(n);
   const double keep = hold_spheres ? 1.0 - params_.fluid.relax_damping : 1.0;
+  if (rebalance_interval_ > 0 && decomposition_ && steps_ % rebalance_interval_ == 0) {
+    force_rebalance_ = true;  // at the rebuild this step makes
+    fluid_lists_stale_ = true;
+  }
   if (++steps_since_sort_ >= sort_interval_) {  // keep neighbours close in memory
     steps_since_sort_ = 0;
     f.resize(f.n_owned);
@@ -457,7 +550,10 @@ void Simulation::advance(bool hold_spheres) {
   lap(PassTimers::kIntegrate);
   if (!hold_spheres) dem_.half_step(dt, /*first_half=*/true);
   lap(PassTimers::kDem);
+  in_step_ = true;  // a rebuild on ranks migrates u^n and rho^n with their particles
   compute_fluid_side(hold_spheres);
+  in_step_ = false;
+  n = static_cast<long>(f.n_owned);
   lap.restart();  // compute_fluid_side timed its own passes
   drag_phi_.resize(3 * n);
   bool exchange = false;
@@ -514,7 +610,7 @@ void Simulation::next_dt() {
     const double acc = std::sqrt(f.ax[a] * f.ax[a] + f.ay[a] * f.ay[a] + f.az[a] * f.az[a]);
     if (acc > 0) dt = std::min(dt, 0.25 * std::sqrt(f.h[a] / acc));  // force
   }
-  dt_sph_ = dt;
+  dt_sph_ = comm_.min(dt);
 }
 
 }  // namespace sphdem

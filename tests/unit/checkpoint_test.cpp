@@ -363,7 +363,7 @@ TEST(FieldRegistry, HaloTagsHoldAfterAnEvaluation) {
     for (int k = 0; k < 5; ++k) sim.step();
     sim.refresh();  // every list anew, every field evaluated and its halo filled
     const Box& box = sim.params().box;
-    expect_halo_copies_equal_sources(sim.fluid(), sim.fluid_halo().source(), box,
+    expect_halo_copies_equal_sources(sim.fluid(), sim.fluid_halo().periodic().source(), box,
                                      scene.name.c_str());
     expect_halo_copies_equal_sources(sim.spheres(), sim.dem().halo().source(), box,
                                      scene.name.c_str());
