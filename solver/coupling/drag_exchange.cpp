@@ -7,7 +7,7 @@
 namespace sphdem {
 
 void drag_exchange_impulses(const DemParticles& s, const double* gain,
-                            const FluidSpherePairs& pairs, const PeriodicHalo& sphere_halo,
+                            const FluidSpherePairs& pairs, const Halo& sphere_halo,
                             const double* phi, std::size_t n_fluid, double dt, PairAccumulator& acc,
                             std::vector<double>& impulse) {
   constexpr int kRow = 3;

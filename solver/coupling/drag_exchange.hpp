@@ -21,7 +21,7 @@
 
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
-#include "domain/periodic_halo.hpp"
+#include "domain/halo.hpp"
 #include "sph/pair_accumulator.hpp"
 
 namespace sphdem {
@@ -57,7 +57,7 @@ inline bool take_drag_exchange(double dt, double drag_rate, double volume, doubl
 // J_j into impulse (three per owned sphere) from phi (three per owned fluid particle,
 // zero where explicit); halo images' sums go to their owners.
 void drag_exchange_impulses(const DemParticles& s, const double* gain,
-                            const FluidSpherePairs& pairs, const PeriodicHalo& sphere_halo,
+                            const FluidSpherePairs& pairs, const Halo& sphere_halo,
                             const double* phi, std::size_t n_fluid, double dt, PairAccumulator& acc,
                             std::vector<double>& impulse);
 

@@ -37,8 +37,9 @@ inline constexpr std::size_t kSphereBlock = 256;
 // What the spheres' fluid force passes leave behind: each owned sphere's drag coefficient
 // (the drag exchange's gains, coupling/drag_exchange.hpp) and the largest relaxation rate
 // (which bounds the next half step's sub-step), with the lanes the passes run in.
+// The drag's state over the sub-steps besides each sphere's coefficient (DemParticles'
+// drag_c, which migrates and re-sorts with its sphere).
 struct SphereDrag {
-  std::vector<double> c;
   double rate_max = 0;  // 0 before the first pass and without fluid
   PairIsa isa = best_pair_isa();
 };

@@ -121,7 +121,7 @@ double scatter_baseline(FluidParticles& f, const DemParticles& s, const FluidSph
 }  // namespace
 
 double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
-                                    const FluidSpherePairs& pairs, const PeriodicHalo& halo,
+                                    const FluidSpherePairs& pairs, const Halo& halo,
                                     PairAccumulator& acc, const HydrostaticPressure* pressure,
                                     PairIsa isa) {
   const std::size_t ns = s.n_owned;

@@ -4,7 +4,7 @@
 
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
-#include "domain/periodic_halo.hpp"
+#include "domain/halo.hpp"
 #include "sph/fluid_particles.hpp"
 #include "sph/hydrostatic_pressure.hpp"
 #include "sph/pair_accumulator.hpp"
@@ -20,7 +20,7 @@ namespace sphdem {
 //   u_f,j = sum_b (m_b/rho_b) u_b W_jb / S_j,  eps_j likewise          (for 2.74)
 //   and the local Sauter mean diameter (2.80) for the polydisperse drag
 // Scattered from the owned fluid particles' pairs: a pair with a halo sphere adds to the
-// image's row, which the halo adds to its owner's (PeriodicHalo::add_to_sources): the
+// image's row, which the halo adds to its owner's (Halo::add_to_sources): the
 // same sum over periodic images. A sphere with no fluid neighbour (above the free
 // surface) gets S_j = 0, eps_j = 1 and no fluid force.
 // With `pressure` (the variational coupling, coupling/pressure_coupling.hpp) the same pass
@@ -28,7 +28,7 @@ namespace sphdem {
 // their pressure force / V_j and the fluid gets its share; returns the walls' vertical
 // push on the spheres (0 without). One pass reads each pair once for both.
 double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
-                                    const FluidSpherePairs& pairs, const PeriodicHalo& halo,
+                                    const FluidSpherePairs& pairs, const Halo& halo,
                                     PairAccumulator& scratch,
                                     const HydrostaticPressure* pressure = nullptr,
                                     PairIsa isa = best_pair_isa());

@@ -4,7 +4,7 @@
 
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "dem/dem_particles.hpp"
-#include "domain/periodic_halo.hpp"
+#include "domain/halo.hpp"
 #include "sph/fluid_particles.hpp"
 #include "sph/hydrostatic_pressure.hpp"
 #include "sph/pair_accumulator.hpp"
@@ -36,7 +36,7 @@ namespace sphdem {
 // The pairs are summed in the interpolation's pass (coupling/interpolation.hpp), which
 // sets the spheres' other fluid fields too.
 double couple_pressure_variationally(FluidParticles& f, DemParticles& s,
-                                     const FluidSpherePairs& pairs, const PeriodicHalo& halo,
+                                     const FluidSpherePairs& pairs, const Halo& halo,
                                      PairAccumulator& scratch, const HydrostaticPressure& ph = {});
 
 }  // namespace sphdem

@@ -4,8 +4,9 @@
 // fluid force and the acceleration to a row while it is still in registers, so a
 // sub-step streams the sphere arrays once for all its forces.
 //
-// Halo neighbours are read through their owned source (HaloImages): between two list
-// builds the sub-steps need no halo fill.
+// Halo neighbours are read through HaloImages: on one rank through their owned source, so
+// that between two list builds the sub-steps need no halo fill; on several ranks a copy
+// stands for itself, refreshed before every pass (SphereLists::refresh_for_contacts).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

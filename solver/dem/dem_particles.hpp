@@ -32,6 +32,7 @@ struct DemParticles {
   // forces
   std::vector<double> fx, fy, fz;     // fluid force now, eq. 2.68
   std::vector<double> fmx, fmy, fmz;  // fluid force averaged over the last SPH step
+  std::vector<double> drag_c;         // the last force pass's drag coefficient c (2.68)
   std::vector<double> cx, cy, cz;     // contact force
   std::vector<double> tx, ty, tz;     // contact torque (tangential and rolling parts; else 0)
   std::vector<double> ax, ay, az;     // acceleration
@@ -43,7 +44,7 @@ struct DemParticles {
 
   // The field registry: every per-particle array with its name and role
   // (domain/field_info.hpp), for checkpoints, halos, resizing and reordering.
-  static constexpr int kFieldCount = 42;
+  static constexpr int kFieldCount = 43;
   template <class F>
   void for_each_field(F&& f) {
     visit_fields(*this, f);
@@ -99,6 +100,7 @@ struct DemParticles {
     f(FieldInfo{"fmx", kState | kHaloAfterPass}, p.fmx);  // the open mean-force window
     f(FieldInfo{"fmy", kState | kHaloAfterPass}, p.fmy);
     f(FieldInfo{"fmz", kState | kHaloAfterPass}, p.fmz);
+    f(FieldInfo{"drag_c", kScratch}, p.drag_c);  // (0 before the first pass, without fluid)
     f(FieldInfo{"cx", kScratch}, p.cx);
     f(FieldInfo{"cy", kScratch}, p.cy);
     f(FieldInfo{"cz", kScratch}, p.cz);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dem/history_migration.hpp"
 #include "domain/reorder.hpp"
 
 namespace sphdem {
@@ -14,33 +15,59 @@ void SphereLists::rebuild(DemParticles& s) {
   for (std::size_t i = 0; i < s.n_owned; ++i) {
     s.x[i] = box_.wrap(0, s.x[i]);
     s.y[i] = box_.wrap(1, s.y[i]);
+  }
+  s.resize(s.n_owned);
+  if (decomposition_) distribute(s);
+  for (std::size_t i = 0; i < s.n_owned; ++i) {
     s.x0[i] = s.x[i];
     s.y0[i] = s.y[i];
     s.z0[i] = s.z[i];
   }
   double rmax = 0;
   for (std::size_t i = 0; i < s.n_owned; ++i) rmax = std::max(rmax, s.radius[i]);
+  rmax = halo_.comm().max(rmax);
   const double skin = skin_fraction_ * 2.0 * rmax;
   const double contact_cut = 2.0 * rmax + skin;
-  s.resize(s.n_owned);
   // (a kernel centred on the spheres reaches further by the skin they may move before
   // the next rebuild)
   const double needed = std::max({reach_.needed, 2.0 * rmax, reach_.sphere_kernel});
   const double wanted = std::max(
       {reach_.wanted, contact_cut, reach_.sphere_kernel > 0 ? reach_.sphere_kernel + skin : 0.0});
-  halo_.build(box_, box_.halo_width(needed, wanted), s.x.data(), s.y.data(), s.z.data(), s.n_owned);
+  if (decomposition_)
+    halo_.build(*decomposition_, std::max(needed, wanted), s.x.data(), s.y.data(), s.z.data(),
+                s.n_owned);
+  else
+    halo_.build(box_, box_.halo_width(needed, wanted), s.x.data(), s.y.data(), s.z.data(),
+                s.n_owned);
   s.resize(s.n_owned + halo_.n_ghost());
   halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
   s.for_each_field([&](const FieldInfo& field, auto& v) {
     if (field.filled_on_build()) halo_.fill(v);
   });
-  if (s.n_owned > 0) {
+  if (rmax > 0.0) {  // (on ranks: spheres on any rank)
     cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
     contacts_.build(s, cells_, skin);
   }
   if (history_on_) history_.load(s, contacts_);
   drift_ = 0.0;
   ++builds_;
+}
+
+// Several ranks: each owned sphere to the rank that owns its cell, its contact records
+// (in the keyed store since rebuild's save) with it.
+void SphereLists::distribute(DemParticles& s) {
+  const RankComm& comm = halo_.comm();
+  std::vector<int> dest(s.n_owned);
+  std::vector<std::int64_t> leaving_id;
+  std::vector<int> leaving_dest;
+  for (std::size_t i = 0; i < s.n_owned; ++i) {
+    dest[i] = decomposition_->owner(s.x[i], s.y[i], s.z[i]);
+    if (dest[i] == comm.rank()) continue;
+    leaving_id.push_back(s.id[i]);
+    leaving_dest.push_back(dest[i]);
+  }
+  if (history_on_) migrate_history(comm, history_, leaving_id, leaving_dest);
+  migrate(comm, s, dest);
 }
 
 void SphereLists::sort_by_cell(DemParticles& s, double cell_size) {
@@ -51,7 +78,7 @@ void SphereLists::sort_by_cell(DemParticles& s, double cell_size) {
 }
 
 void SphereLists::moved(DemParticles& s, double max_step2) {
-  drift_ += std::sqrt(max_step2);
+  drift_ += std::sqrt(halo_.comm().max(max_step2));  // every rank the same decision
   if (drift_ > 0.5 * skin()) drift_ = displacement_since_build(s);
   if (drift_ > 0.5 * skin()) rebuild(s);
 }
@@ -70,14 +97,11 @@ double SphereLists::displacement_since_build(const DemParticles& s) const {
     const double dx = s.x[j] - s.x0[j], dy = s.y[j] - s.y0[j], dz = s.z[j] - s.z0[j];
     max_disp2 = std::max(max_disp2, dx * dx + dy * dy + dz * dz);
   }
-  return std::sqrt(max_disp2);
+  return std::sqrt(halo_.comm().max(max_disp2));
 }
 
 void SphereLists::refresh_halo(DemParticles& s) const {
-  halo_.fill_positions(s.x.data(), s.y.data(), s.z.data());
-  s.for_each_field([&](const FieldInfo& field, auto& v) {
-    if (field.refreshed()) halo_.fill(v);
-  });
+  refresh_copies(halo_, s);
 }
 
 void SphereLists::write(CheckpointWriter& w, const DemParticles& s) const {

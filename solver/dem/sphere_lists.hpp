@@ -12,7 +12,8 @@
 #include "dem/dem_particles.hpp"
 #include "domain/box.hpp"
 #include "domain/cell_list.hpp"
-#include "domain/periodic_halo.hpp"
+#include "domain/decomposition.hpp"
+#include "domain/halo.hpp"
 #include "io/checkpoint_file.hpp"
 
 namespace sphdem {
@@ -28,10 +29,14 @@ class SphereLists {
  public:
   // skin_fraction: the Verlet skin over the largest diameter; history: the contact model
   // carries state (tangential or rolling springs) that follows the list.
-  SphereLists(const Box& box, double skin_fraction, bool history)
-      : box_(box), skin_fraction_(skin_fraction), history_on_(history) {}
+  SphereLists(const Box& box, double skin_fraction, bool history,
+              const RankComm& comm = RankComm(MPI_COMM_NULL))
+      : box_(box), skin_fraction_(skin_fraction), history_on_(history), halo_(comm) {}
 
-  const PeriodicHalo& halo() const { return halo_; }
+  // Several ranks: the decomposition the fluid shares; each rebuild migrates the owned
+  // spheres to the ranks that own their cells, with their contact history.
+  void set_decomposition(const Decomposition* d) { decomposition_ = d; }
+  const Halo& halo() const { return halo_; }
   const ContactNeighbourList& contacts() const { return contacts_; }
   ContactHistory& history() { return history_; }
   const ContactHistory& history() const { return history_; }
@@ -60,6 +65,11 @@ class SphereLists {
   void moved_by(double reach) { drift_ += reach; }
   // The halo copies' positions and changing fields as the passes read them.
   void refresh_halo(DemParticles& s) const;
+  // Before a contact pass: on ranks the contact rows read the copies themselves (one rank
+  // reads their owned source and needs nothing), so their motion is refreshed. Collective.
+  void refresh_for_contacts(DemParticles& s) const {
+    if (halo_.ranks()) refresh_halo(s);
+  }
 
   // Checkpoints: the contact history by id pairs and the fluid's reach.
   void write(CheckpointWriter& w, const DemParticles& s) const;
@@ -67,11 +77,13 @@ class SphereLists {
 
  private:
   double displacement_since_build(const DemParticles& s) const;
+  void distribute(DemParticles& s);
 
   Box box_;
   double skin_fraction_;
   bool history_on_;
-  PeriodicHalo halo_;
+  Halo halo_;
+  const Decomposition* decomposition_ = nullptr;
   CellList cells_;
   ContactNeighbourList contacts_;
   ContactHistory history_;

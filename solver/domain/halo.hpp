@@ -6,6 +6,9 @@
 // scatter the copies' shares back alike, so the passes never ask which. One rank keeps
 // PeriodicHalo so that its bits stay those of a run without MPI.
 #include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
 
 #include "domain/decomposition.hpp"
 #include "domain/periodic_halo.hpp"
@@ -16,7 +19,7 @@ namespace sphdem {
 
 class Halo {
  public:
-  explicit Halo(const RankComm& comm = RankComm()) : comm_(comm) {}
+  explicit Halo(const RankComm& comm = RankComm(MPI_COMM_NULL)) : comm_(comm) {}
 
   bool ranks() const { return comm_.parallel(); }
   const RankComm& comm() const { return comm_; }
@@ -31,6 +34,10 @@ class Halo {
   void build(const Decomposition& d, double reach, const double* x, const double* y,
              const double* z, std::size_t n_owned) {
     rank_.build(comm_, d.grid(), d.partition(), reach, x, y, z, n_owned);
+    self_.resize(rank_.n_ghost());
+    for (std::size_t g = 0; g < self_.size(); ++g)
+      self_[g] = static_cast<std::uint32_t>(n_owned + g);
+    no_shift_.assign(rank_.n_ghost(), 0.0);
   }
 
   std::size_t n_ghost() const { return ranks() ? rank_.n_ghost() : periodic_.n_ghost(); }
@@ -48,12 +55,30 @@ class Halo {
     else
       periodic_.fill_positions(x, y, z);
   }
+  // The positions and the double `fields` (on ranks in one exchange). Collective on ranks.
+  void fill_positions_and(double* x, double* y, double* z,
+                          const std::vector<double*>& fields) const {
+    if (ranks()) {
+      rank_.fill_positions_and(comm_, x, y, z, fields);
+      return;
+    }
+    periodic_.fill_positions(x, y, z);
+    for (double* f : fields) periodic_.fill(f);
+  }
   // The copies' rows of `stride` values added to their owners' (the reverse of fill).
   void add_to_sources(double* rows, std::size_t stride) const {
     if (ranks())
       rank_.add_to_sources(comm_, rows, stride);
     else
       periodic_.add_to_sources(rows, stride);
+  }
+  // How a pass reads a neighbour through the halo (periodic_halo.hpp's owned_image): on one
+  // rank an image reads its owned source, so that copies need no refresh between builds;
+  // on several a copy stands for itself (no shift), and its fields must be refreshed
+  // before each pass that reads them (the DEM sub-steps do: SphereLists::refresh_motion).
+  HaloImages images() const {
+    if (!ranks()) return periodic_.images();
+    return {rank_.n_owned(), self_.data(), no_shift_.data(), no_shift_.data(), no_shift_.data()};
   }
   // One rank: each image's owned source (tests).
   const PeriodicHalo& periodic() const { return periodic_; }
@@ -62,6 +87,23 @@ class Halo {
   RankComm comm_;
   PeriodicHalo periodic_;
   RankHalo rank_;
+  std::vector<std::uint32_t> self_;  // ranks: each copy's own index
+  std::vector<double> no_shift_;
 };
+
+// Between builds: the copies' positions and the fields the registry marks refreshed (the
+// carried state that changes), on ranks in one exchange.
+template <class Particles>
+void refresh_copies(const Halo& halo, Particles& p) {
+  std::vector<double*> fields;
+  p.for_each_field([&](const FieldInfo& field, auto& v) {
+    if (!field.refreshed()) return;
+    if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::vector<double>>)
+      fields.push_back(v.data());
+    else
+      halo.fill(v);  // (none today: every changing field is a double)
+  });
+  halo.fill_positions_and(p.x.data(), p.y.data(), p.z.data(), fields);
+}
 
 }  // namespace sphdem

@@ -82,6 +82,29 @@ void RankHalo::fill_positions(const RankComm& comm, double* x, double* y, double
   }
 }
 
+void RankHalo::fill_positions_and(const RankComm& comm, double* x, double* y, double* z,
+                                  const std::vector<double*>& fields) const {
+  const std::size_t stride = 3 + fields.size();
+  std::vector<double> send(send_index_.size() * stride), recv(n_ghost_ * stride);
+  for (std::size_t k = 0; k < send_index_.size(); ++k) {
+    const std::size_t i = send_index_[k];
+    double* row = send.data() + k * stride;
+    row[0] = x[i];
+    row[1] = y[i];
+    row[2] = z[i];
+    for (std::size_t f = 0; f < fields.size(); ++f) row[3 + f] = fields[f][i];
+  }
+  comm.exchange(send.data(), send_count_, recv.data(), recv_count_, stride * sizeof(double));
+  for (std::size_t g = 0; g < n_ghost_; ++g) {
+    const double* row = recv.data() + g * stride;
+    const std::size_t j = n_owned_ + g;
+    x[j] = row[0] + shift_[3 * g];
+    y[j] = row[1] + shift_[3 * g + 1];
+    z[j] = row[2] + shift_[3 * g + 2];
+    for (std::size_t f = 0; f < fields.size(); ++f) fields[f][j] = row[3 + f];
+  }
+}
+
 void RankHalo::add_to_sources(const RankComm& comm, double* rows, std::size_t stride) const {
   // the copies' rows go back the way they came (the exchange with the counts swapped)
   std::vector<double> back(send_index_.size() * stride);

@@ -57,6 +57,10 @@ class RankHalo {
   }
   // Positions: the owner's plus the image's whole box lengths.
   void fill_positions(const RankComm& comm, double* x, double* y, double* z) const;
+  // The positions and `fields` in one exchange (a copy's values packed in one row): what
+  // a sub-step refreshes, at one message's latency instead of one per field.
+  void fill_positions_and(const RankComm& comm, double* x, double* y, double* z,
+                          const std::vector<double*>& fields) const;
   // Adds each copy's row of `stride` values (rows: owned, then copies) to its owner's row,
   // in a fixed order (by source rank, then copy order).
   void add_to_sources(const RankComm& comm, double* rows, std::size_t stride) const;

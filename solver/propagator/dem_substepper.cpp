@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <type_traits>
 #include <variant>
 
@@ -14,8 +15,22 @@
 
 namespace sphdem {
 
-DemSubstepper::DemSubstepper(const Box& box, const DemStepParams& params, DemParticles spheres)
-    : p_(params), s_(std::move(spheres)), lists_(box, params.skin, params.rotation), groups_(s_) {}
+DemSubstepper::DemSubstepper(const Box& box, const DemStepParams& params, DemParticles spheres,
+                             const RankComm& comm)
+    : p_(params),
+      s_(std::move(spheres)),
+      lists_(box, params.skin, params.rotation, comm),
+      groups_(s_),
+      any_spheres_(comm.sum(s_.n_owned) > 0) {}
+
+void DemSubstepper::set_decomposition(const Decomposition* d) {
+  if (groups_.count() > 0)
+    throw std::runtime_error(
+        "rigid groups (spheres.*.rigid) on several ranks: not yet summed over ranks; run this "
+        "scene on one rank (without mpirun)");
+  p_.multirate = false;
+  lists_.set_decomposition(d);
+}
 
 void DemSubstepper::clear_mean_force() {
   std::fill(s_.fmx.begin(), s_.fmx.end(), 0.0);
@@ -77,7 +92,7 @@ double DemSubstepper::force_rows(const Contact& contact, bool accumulate_mean, d
   const FluidForceWindow window{accumulate_mean, weight, p_.variational};
   const auto& g = p_.gravity;
   const drag::Fluid& fluid = p_.fluid;
-  double* const drag_c = drag_.c.data();
+  double* const drag_c = s.drag_c.data();
   const PairIsa isa = drag_.isa;
   const double h = advance.h;
   double* const xn = next_.x.data();
@@ -170,12 +185,12 @@ double DemSubstepper::force_rows(const Contact& contact, bool accumulate_mean, d
 double DemSubstepper::fluid_drag_time() const {
   const DemParticles& s = s_;
   double t_min = std::numeric_limits<double>::infinity();
-  if (!p_.fluid_force || drag_.c.size() < s.n_owned) return t_min;
+  if (!p_.fluid_force) return t_min;
   const long n = static_cast<long>(s.n_owned);
   const double rho_f = p_.fluid.rho;
 #pragma omp parallel for schedule(static) reduction(min : t_min) if (n > kMinParallelSpheres)
   for (long j = 0; j < n; ++j) {
-    const double rate = drag_.c[j] * s.eps[j] / s.mass[j];  // 1 / tau_s at its voidage and Re
+    const double rate = s.drag_c[j] * s.eps[j] / s.mass[j];  // 1 / tau_s at its voidage and Re
     if (!(rate > 0.0)) continue;
     const double r = (1.0 - s.eps[j]) * s.mass[j] / (s.volume(j) * s.eps[j] * rho_f);
     t_min = std::min(t_min, std::log1p(1.0 / r) / rate);
@@ -186,8 +201,8 @@ double DemSubstepper::fluid_drag_time() const {
 const std::vector<double>& DemSubstepper::update_drag_gains() {
   const DemParticles& s = s_;
   drag_gain_.assign(s.size(), 0.0);
-  if (!p_.fluid_force || drag_.c.size() < s.n_owned) return drag_gain_;
-  for (std::size_t j = 0; j < s.n_owned; ++j) drag_gain_[j] = drag_.c[j] * s.eps[j];
+  if (!p_.fluid_force) return drag_gain_;
+  for (std::size_t j = 0; j < s.n_owned; ++j) drag_gain_[j] = s.drag_c[j] * s.eps[j];
   lists_.halo().fill(drag_gain_);
   return drag_gain_;
 }
@@ -220,7 +235,6 @@ double DemSubstepper::forces_advancing(bool accumulate_mean, double weight, doub
                                        const Advance& advance) {
   DemParticles& s = s_;
   if (s.n_owned == 0) return 0.0;
-  if (p_.fluid_force) drag_.c.resize(s.n_owned);
   NextSubstep& next = next_;
   if (advance.correct) {
     for (auto* v : {&next.vx, &next.vy, &next.vz}) v->resize(s.size());
@@ -268,10 +282,11 @@ double DemSubstepper::forces_advancing(bool accumulate_mean, double weight, doub
 // impulse is returned exactly once.
 void DemSubstepper::half_step(double dt, bool first_half) {
   DemParticles& s = s_;
-  if (s.n_owned == 0) return;
-  // dt_max (contacts, Stokes time) and the drag relaxation at the last force pass
-  const double drag_bound =
-      drag_.rate_max > 0.0 ? p_.drag_time_fraction / drag_.rate_max : p_.dt_max;
+  if (!any_spheres_) return;
+  // dt_max (contacts, Stokes time) and the drag relaxation at the last force pass, the
+  // same on every rank
+  const double rate_max = lists_.halo().comm().max(drag_.rate_max);
+  const double drag_bound = rate_max > 0.0 ? p_.drag_time_fraction / rate_max : p_.dt_max;
   const double h_max = std::min(p_.dt_max, drag_bound);
   const int per_half = std::max(1, static_cast<int>(std::ceil(0.5 * dt / h_max)));
   const double h = 0.5 * dt / per_half;
@@ -298,10 +313,13 @@ void DemSubstepper::substeps_fused(double h, int count, double weight) {
     if (spin) kick_spin_of(s, j, h);
   }
   lists_.moved(s, max_step2);
+  lists_.refresh_for_contacts(s);
   for (int k = 0; k < count; ++k) {
     const bool last = k + 1 == count;  // its corrector ends the half step
     const double step2 = forces_advancing(true, weight, h, Advance{true, !last, h});
-    if (!last) lists_.moved(s, step2);
+    if (last) break;
+    lists_.moved(s, step2);
+    lists_.refresh_for_contacts(s);
   }
 }
 

@@ -6,6 +6,7 @@
 // groups share their force between), or multi-rate (propagator/multirate_half_step.hpp).
 // The coupled step (simulation.hpp) writes the fluid fields at the spheres and reads back
 // their mean force fm.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -28,15 +29,19 @@ namespace sphdem {
 
 class DemSubstepper {
  public:
-  DemSubstepper(const Box& box, const DemStepParams& params, DemParticles spheres);
-
+  DemSubstepper(const Box& box, const DemStepParams& params, DemParticles spheres,
+                const RankComm& comm = RankComm(MPI_COMM_NULL));
+  // Several ranks: the decomposition the fluid shares (the spheres migrate at each list
+  // rebuild and the contact rows read halo copies refreshed every sub-step). Rigid groups
+  // are refused there (not yet summed over ranks), and the multi-rate half step is off.
+  void set_decomposition(const Decomposition* d);
   DemParticles& spheres() { return s_; }
   const DemParticles& spheres() const { return s_; }
   const DemStepParams& params() const { return p_; }
   // time.multirate on or off from the next half step (step_timing times steps without it).
   void set_multirate(bool on) { p_.multirate = on; }
   const SphereLists& lists() const { return lists_; }
-  const PeriodicHalo& halo() const { return lists_.halo(); }
+  const Halo& halo() const { return lists_.halo(); }
   const ContactNeighbourList& contacts() const { return lists_.contacts(); }
   const ContactHistory& contact_history() const { return lists_.history(); }
   std::vector<ContactHistory::Record> contact_records() const { return lists_.records(s_); }
@@ -61,6 +66,12 @@ class DemSubstepper {
   // rigid group takes the sum of its members' over its mass.
   void add_impulses(const double* impulse);
   int substeps() const { return substeps_; }  // per SPH step
+  // The work of owned sphere j in one SPH step, in list entries (the decomposition's
+  // counter): its row's cost in every sub-step of the last step.
+  std::uint64_t sphere_work(std::size_t j) const {
+    const std::uint32_t* row = lists_.contacts().offset.data() + j;
+    return static_cast<std::uint64_t>((row[1] - row[0] + row_cost()) * std::max(1, substeps_));
+  }
   const MultirateTally& multirate_tally() const { return multirate_.tally(); }
   // Sphere halo and contact list builds so far: a list into the halo is stale once it changes.
   long list_builds() const { return lists_.builds(); }
@@ -144,6 +155,7 @@ class DemSubstepper {
   MeasuredShares measured_shares_;  // the dry force pass's rows per thread
   double dt_ = 0;
   int substeps_ = 0;
+  bool any_spheres_ = false;  // on any rank
 };
 
 }  // namespace sphdem

@@ -101,10 +101,9 @@ void MultirateHalfStep::restore_near_history(SphereLists& lists) const {
 double MultirateHalfStep::free_step(const DemStepParams& p, DemParticles& s, SphereDrag& drag,
                                     double h, double weight, bool fresh) {
   const long n = static_cast<long>(s.n_owned);
-  drag.c.resize(s.n_owned);
   const FluidForceWindow window{true, weight, p.variational};
   const auto& g = p.gravity;
-  double* const drag_c = drag.c.data();
+  double* const drag_c = s.drag_c.data();
   const PairIsa isa = drag.isa;
   double max_step2 = 0.0, rate_max = 0.0;
 #pragma omp parallel if (n > kMinParallelSpheres) reduction(max : max_step2, rate_max)
@@ -167,7 +166,7 @@ double MultirateHalfStep::near_substeps(const Contact& contact, const DemStepPar
   const HaloImages images = lists.halo().images();
   const FluidForceWindow window{true, weight, p.variational};
   const auto& g = p.gravity;
-  double* const drag_c = drag.c.data();
+  double* const drag_c = s.drag_c.data();
   double* const aox = a_old_.x.data();
   double* const aoy = a_old_.y.data();
   double* const aoz = a_old_.z.data();

@@ -40,14 +40,6 @@ DemParticles placed_spheres(const Scene& scene, FluidParticles& fluid) {
   return spheres;
 }
 
-void refuse_spheres_on_ranks(const RankComm& comm, const DemParticles& s, const Scene& scene) {
-  if (comm.parallel() && s.n_owned > 0)
-    throw std::runtime_error(fmt::format(
-        "{}: {} spheres on {} ranks: the spheres are not yet decomposed over ranks (issue 36); "
-        "run this scene on one rank (without mpirun)",
-        scene.name, s.n_owned, comm.size()));
-}
-
 // The particle arrays with the state a step keeps from its start (u^n, rho^n), so that a
 // rebuild inside the step migrates them with their particles.
 struct FluidWithStepStart {
@@ -72,9 +64,8 @@ Simulation::Simulation(const Scene& scene, const RankComm& comm)
     : scene_(scene),
       comm_(comm),
       params_(compile_step_params(scene_)),
-      dem_(params_.box, params_.dem, placed_spheres(scene_, fluid_)),
+      dem_(params_.box, params_.dem, placed_spheres(scene_, fluid_), comm_),
       fluid_halo_(comm_) {
-  refuse_spheres_on_ranks(comm_, dem_.spheres(), scene_);
   build_initial_state();
 }
 
@@ -83,9 +74,8 @@ Simulation::Simulation(const Scene& scene, const CheckpointReader& r, const Rank
       comm_(comm),
       params_(compile_step_params(scene_)),
       fluid_(read_particle_state<FluidParticles>(r, "fluid/")),
-      dem_(params_.box, params_.dem, DemSubstepper::read_spheres(r)),
+      dem_(params_.box, params_.dem, DemSubstepper::read_spheres(r), comm_),
       fluid_halo_(comm_) {
-  refuse_spheres_on_ranks(comm_, dem_.spheres(), scene_);
   dem_.read_state(r);
   time_ = r.scalar<double>("run/time");
   dt_sph_ = r.scalar<double>("run/dt_sph");
@@ -115,6 +105,14 @@ void Simulation::decompose(double cell) {
   for (std::size_t a = 0; a < f.n_owned; ++a)
     dest[a] = decomposition_->owner(f.x[a], f.y[a], f.z[a]);
   keep_share(comm_, f, dest);
+  DemParticles& s = dem_.spheres();
+  const Box& box = params_.box;
+  s.resize(s.n_owned);
+  dest.resize(s.n_owned);
+  for (std::size_t i = 0; i < s.n_owned; ++i)
+    dest[i] = decomposition_->owner(box.wrap(0, s.x[i]), box.wrap(1, s.y[i]), s.z[i]);
+  keep_share(comm_, s, dest);
+  dem_.set_decomposition(&*decomposition_);
 }
 
 // Several ranks, at a rebuild: the work counted since the last one summed, the curve recut
@@ -252,6 +250,11 @@ void Simulation::rebuild_neighbours() {
   dem_.set_fluid_reach({c.sphere_kernel_scale * kernel::kSupport * hmax_at_build_,
                         fluid_sphere_cutoff(), c.big_cutoff});
   dem_.rebuild_lists();
+  if (decomposition_) {  // the spheres' work in the cells they are in now
+    const DemParticles& s = dem_.spheres();
+    for (std::size_t j = 0; j < s.n_owned; ++j)
+      decomposition_->count(s.x[j], s.y[j], s.z[j], dem_.sphere_work(j));
+  }
   build_sphere_pairs();
 }
 
@@ -324,10 +327,7 @@ void Simulation::update_neighbours() {
     rebuild_neighbours();
     return;
   }
-  fluid_halo_.fill_positions(f.x.data(), f.y.data(), f.z.data());
-  f.for_each_field([&](const FieldInfo& field, auto& v) {
-    if (field.refreshed()) fluid_halo_.fill(v);
-  });
+  refresh_copies(fluid_halo_, f);
   if (params_.coupling.double_smoothing)  // its re-smoothing walks the fluid's cells (3.10)
     fluid_cells_.build(f.x.data(), f.y.data(), f.z.data(), f.size(), cell_size_, 2);
   if (f.n_owned > 0 && !sphere_pairs_stale() && margin.sphere < 0)
@@ -468,7 +468,7 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
       s.fmz[j] = s.fz[j] - vp * s.gz[j];
     }
   }
-  const PeriodicHalo& sphere_halo = dem_.halo();
+  const Halo& sphere_halo = dem_.halo();
   for (auto* v : {&s.fmx, &s.fmy, &s.fmz, &s.shepard}) sphere_halo.fill(*v);
   add_reaction_on_fluid(f, s, sphere_pairs_, sphere_scratch_, dem_.update_drag_gains().data());
   lap(PassTimers::kReaction);

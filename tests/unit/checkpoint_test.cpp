@@ -365,7 +365,7 @@ TEST(FieldRegistry, HaloTagsHoldAfterAnEvaluation) {
     const Box& box = sim.params().box;
     expect_halo_copies_equal_sources(sim.fluid(), sim.fluid_halo().periodic().source(), box,
                                      scene.name.c_str());
-    expect_halo_copies_equal_sources(sim.spheres(), sim.dem().halo().source(), box,
+    expect_halo_copies_equal_sources(sim.spheres(), sim.dem().halo().periodic().source(), box,
                                      scene.name.c_str());
   }
 }

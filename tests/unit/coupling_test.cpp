@@ -17,7 +17,7 @@
 #include "coupling/voidage.hpp"
 #include "domain/box.hpp"
 #include "domain/cell_list.hpp"
-#include "domain/periodic_halo.hpp"
+#include "domain/halo.hpp"
 #include "sph/kernel.hpp"
 
 using namespace sphdem;
@@ -28,7 +28,7 @@ struct Config {
   Box box;
   FluidParticles f;
   DemParticles s;
-  PeriodicHalo fh, sh;
+  Halo fh, sh;
   CellList fcells, scells;
   FluidSpherePairs pairs;
   PairAccumulator scratch;
@@ -657,7 +657,7 @@ TEST(Coupling, SphereSumsMatchBruteForceWithEitherInstructionSet) {
     for (std::size_t a = 0; a < f.n_owned; ++a) f.P[a] = u(rng);
     const HydrostaticPressure ph{1000.0, -9.81, c.box.hi[2], 0.2 * c.box.hi[2]};  // tapered
     const std::size_t ns = s.n_owned;
-    const auto owner = [&](std::size_t j) { return j < ns ? j : c.sh.source()[j - ns]; };
+    const auto owner = [&](std::size_t j) { return j < ns ? j : c.sh.periodic().source()[j - ns]; };
     // brute force: per owned sphere, S, S eps, S u_x, m theta_x W, and the pressure sums
     std::vector<double> S(ns, 0.0), Se(ns, 0.0), Su(ns, 0.0), Mt(ns, 0.0), Pg[3];
     for (auto& v : Pg) v.assign(ns, 0.0);
