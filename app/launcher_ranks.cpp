@@ -32,13 +32,11 @@ LauncherRanks launcher_ranks(const char* (*getenv)(const char*)) {
   return r;
 }
 
-std::string one_process_message(const LauncherRanks& r) {
+std::string one_process_message(const LauncherRanks& r, const std::string& command) {
   return fmt::format(
-      "sphdem: error: started as {} MPI ranks ({}={}); sphdem runs a scene on one process "
-      "so far, its threads set by OMP_NUM_THREADS, and under mpirun every rank would run the "
-      "whole scene into the same files. Run it without mpirun, e.g. OMP_NUM_THREADS=4 sphdem "
-      "run CASE\n",
-      r.size, r.variable, r.size);
+      "sphdem: error: `sphdem {}` started as {} MPI ranks ({}={}); only `run` and `resume` "
+      "share a scene over ranks. Run `sphdem {}` without mpirun\n",
+      command, r.size, r.variable, r.size, command);
 }
 
 }  // namespace sphdem

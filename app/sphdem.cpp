@@ -17,6 +17,8 @@
 
 #include "analysis/contact_network.hpp"
 #include "analysis/voidage_grid.hpp"
+#include "analysis/watchdog.hpp"
+#include "domain/rank_comm.hpp"
 #include "io/checkpoint_file.hpp"
 #include "launcher_ranks.hpp"
 #include "propagator/simulation.hpp"
@@ -68,6 +70,15 @@ int print_or_update_docs(const std::string& block, const std::vector<std::string
 // the figures at the end. Returns the exit code.
 int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bool no_insitu,
                       const sphdem::CheckpointReader* resume) {
+  const sphdem::RankComm comm;
+  if (comm.parallel() && (scene.output.vtk_every > 0 || (scene.insitu.enabled && !no_insitu))) {
+    if (comm.rank() == 0)
+      std::cerr << fmt::format(
+          "sphdem: error: {} ranks: the in-situ analysis and VTK snapshots do not run on ranks "
+          "yet (issue 36); add --no-insitu{}, or run on one rank\n",
+          comm.size(), scene.output.vtk_every > 0 ? " and --set output.vtk_every=0" : "");
+    return 2;
+  }
   sphdem::RunOptions opt;
   opt.out_dir = out_dir;
   opt.progress = &std::cerr;
@@ -129,13 +140,22 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
     summary = sphdem::run_scene(scene, opt);
   } catch (const sphdem::SceneError&) {
     throw;
+  } catch (const sphdem::CheckpointError& e) {  // (on ranks: every rank throws it)
+    failure = e.what();
+  } catch (const sphdem::WatchdogError& e) {  // (on ranks: every rank throws it)
+    failure = e.what();
   } catch (const std::exception& e) {
-    failure = e.what();  // keep what was written so far, and still make the figures
+    failure = e.what();     // keep what was written so far, and still make the figures
+    if (comm.parallel()) {  // one rank's failure: the others would wait for it
+      std::cerr << fmt::format("sphdem: run failed on rank {}: {}\n", comm.rank(), failure);
+      MPI_Abort(comm.comm(), 1);
+    }
   }
 #ifdef SPHDEM_HAVE_CATALYST
   insitu.reset();  // finalize Catalyst: pipelines flush their reduced data
 #endif
   if (!failure.empty()) {
+    if (comm.rank() != 0) return 1;
     if (insitu_ran) make_figures(out_dir);
     std::cerr << "sphdem: run failed: " << failure << "\n";
     const auto last = sphdem::CheckpointStore::list(out_dir);
@@ -165,6 +185,17 @@ void check_resume_overrides(const std::vector<std::string>& overrides) {
 }
 
 }  // namespace
+
+// MPI around a run on ranks: initialised only under a launcher, finalised at the end.
+struct MpiSession {
+  bool on;
+  MpiSession(bool start, int& argc, char**& argv) : on(start) {
+    if (on) MPI_Init(&argc, &argv);
+  }
+  ~MpiSession() {
+    if (on) MPI_Finalize();
+  }
+};
 
 int main(int argc, char** argv) {
   CLI::App app{"sphdem: coupled SPH-DEM simulator of fluid-particle flows"};
@@ -223,12 +254,19 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   if (*docs) return print_or_update_docs(doc_block, doc_files);
-  if (const auto ranks =
-          sphdem::launcher_ranks([](const char* v) -> const char* { return std::getenv(v); });
-      ranks.size > 1) {
-    if (ranks.rank == 0) std::cerr << sphdem::one_process_message(ranks);
+  // Under mpirun: run and resume share the scene over the ranks (MPI initialised for them
+  // only); any other command is refused.
+  const auto ranks =
+      sphdem::launcher_ranks([](const char* v) -> const char* { return std::getenv(v); });
+  if (ranks.size > 1 && !*run && !*resume) {
+    if (ranks.rank == 0)
+      std::cerr << sphdem::one_process_message(ranks, *check     ? "check"
+                                                      : *figures ? "figures"
+                                                                 : "docs");
     return 2;
   }
+  const MpiSession mpi(ranks.size > 1, argc, argv);
+  const bool speaks = ranks.rank == 0;  // messages common to every rank: rank 0's
   if (*figures) return make_figures(fig_dir);
   if (!fidelity.empty()) overrides.insert(overrides.begin(), "fidelity=" + fidelity);
   sphdem::install_stop_signals();
@@ -237,16 +275,18 @@ int main(int argc, char** argv) {
       check_resume_overrides(overrides);
       sphdem::CheckpointStore::Found found = sphdem::CheckpointStore::newest_valid(resume_dir);
       for (const auto& why : found.skipped)
-        std::cerr << "sphdem: warning: skipped a checkpoint that does not read back whole: " << why
-                  << "\n";
+        if (speaks)
+          std::cerr << "sphdem: warning: skipped a checkpoint that does not read back whole: "
+                    << why << "\n";
       const sphdem::CheckpointReader& ckpt = *found.reader;
       const sphdem::Scene scene =
           sphdem::load_scene_text(ckpt.text("scene/yaml"), ckpt.path() + " (its scene)", overrides);
       if (ckpt.scalar<double>("run/time") >= scene.time.end * (1.0 - 1e-12)) {
-        std::cerr << fmt::format(
-            "sphdem: the run in {} is complete (t = {:.6g} s = time.end); to extend it: sphdem "
-            "resume {} --set time.end=T\n",
-            resume_dir, ckpt.scalar<double>("run/time"), resume_dir);
+        if (speaks)
+          std::cerr << fmt::format(
+              "sphdem: the run in {} is complete (t = {:.6g} s = time.end); to extend it: sphdem "
+              "resume {} --set time.end=T\n",
+              resume_dir, ckpt.scalar<double>("run/time"), resume_dir);
         return 0;
       }
       return run_with_analysis(scene, resume_dir, no_insitu, &ckpt);
@@ -273,13 +313,13 @@ int main(int argc, char** argv) {
   } catch (const sphdem::SceneError& e) {  // every problem of the scene, one a line
     std::istringstream problems(e.what());
     for (std::string line; std::getline(problems, line);)
-      std::cerr << "sphdem: error: " << line << "\n";
+      if (speaks) std::cerr << "sphdem: error: " << line << "\n";
     return 2;
   } catch (const sphdem::CheckpointError& e) {
-    std::cerr << "sphdem: error: " << e.what() << "\n";
+    if (speaks) std::cerr << "sphdem: error: " << e.what() << "\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "sphdem: run failed: " << e.what() << "\n";
+    if (speaks) std::cerr << "sphdem: run failed: " << e.what() << "\n";
     return 1;
   }
 }

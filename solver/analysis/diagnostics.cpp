@@ -23,12 +23,13 @@ Diagnostics diagnostics(const Simulation& sim) {
   d.omega_bounded = sim.omega_bounded();
   const BasePorePressure base{rho0, std::abs(scene.gravity[2]), scene.fill_height(),
                               scene.fluid.spacing};
-  d.excess_pore_pressure_base = excess_pore_pressure_base(f, base);
+  const RankComm& comm = sim.comm();
+  d.excess_pore_pressure_base = excess_pore_pressure_base(f, base, comm);
   const double k = std::visit([](const auto& law) { return law.normal.k; }, sim.contact_law());
   const double area = scene.box.length(0) * scene.box.length(1);
-  d.wall_load_base = wall_load_base(s, k, area, base);
+  d.wall_load_base = wall_load_base(s, k, area, base, comm);
   d.fluid_load_base =
-      fluid_load_base(f, s, sim.walls_on_spheres_z(), sim.hydrostatic_split(), area, base);
+      fluid_load_base(f, s, sim.walls_on_spheres_z(), sim.hydrostatic_split(), area, base, comm);
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     if (f.kind[a] != kFluid) continue;
     d.fluid_mass += f.mass[a];
@@ -53,6 +54,33 @@ Diagnostics diagnostics(const Simulation& sim) {
     d.com_z[sp] += s.mass[j] * s.z[j];
     mass[sp] += s.mass[j];
     ++d.count[sp];
+  }
+  if (comm.parallel()) {  // the sums and maxima over the ranks
+    std::vector<double> sums{d.fluid_mass, d.kinetic_energy_fluid, d.kinetic_energy_solid,
+                             static_cast<double>(d.voidage_clamped),
+                             static_cast<double>(d.omega_bounded)};
+    for (std::size_t sp = 0; sp < ns; ++sp)
+      for (double v : {d.vz_mean[sp], d.slip_z_mean[sp], d.com_z[sp], mass[sp],
+                       static_cast<double>(d.count[sp])})
+        sums.push_back(v);
+    comm.sum(sums);
+    d.fluid_mass = sums[0];
+    d.kinetic_energy_fluid = sums[1];
+    d.kinetic_energy_solid = sums[2];
+    d.voidage_clamped = static_cast<std::size_t>(sums[3]);
+    d.omega_bounded = static_cast<std::size_t>(sums[4]);
+    for (std::size_t sp = 0; sp < ns; ++sp) {
+      const double* v = sums.data() + 5 + 5 * sp;
+      d.vz_mean[sp] = v[0];
+      d.slip_z_mean[sp] = v[1];
+      d.com_z[sp] = v[2];
+      mass[sp] = v[3];
+      d.count[sp] = static_cast<std::size_t>(v[4]);
+    }
+    std::vector<double> maxima{d.max_overlap_over_d, d.max_density_error};
+    comm.max(maxima);
+    d.max_overlap_over_d = maxima[0];
+    d.max_density_error = maxima[1];
   }
   for (std::size_t sp = 0; sp < ns; ++sp) {
     if (d.count[sp] == 0) continue;

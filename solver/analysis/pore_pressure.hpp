@@ -12,6 +12,7 @@
 // error times the absolute pressure, which this point reading carries: fluid_load_base
 // below is the measure the validation uses.
 #include "dem/dem_particles.hpp"
+#include "domain/rank_comm.hpp"
 #include "sph/fluid_particles.hpp"
 #include "sph/hydrostatic_pressure.hpp"
 
@@ -25,12 +26,15 @@ struct BasePorePressure {
 };
 
 // NaN when the first layer holds no fluid particle.
-double excess_pore_pressure_base(const FluidParticles& f, const BasePorePressure& b);
+// (comm: the ranks the particles are shared over; their sums are reduced.)
+double excess_pore_pressure_base(const FluidParticles& f, const BasePorePressure& b,
+                                 const RankComm& comm = RankComm(MPI_COMM_NULL));
 
 // The spheres' contact load on the bottom wall (z = 0) in the same unit: the elastic
 // normal force sum_i k max(0, r_i - z_i) over (area rho_f |g| H), k the normal stiffness
 // of the linear contact law. A bed at rest puts eq. 15 here.
-double wall_load_base(const DemParticles& s, double k, double area, const BasePorePressure& b);
+double wall_load_base(const DemParticles& s, double k, double area, const BasePorePressure& b,
+                      const RankComm& comm = RankComm(MPI_COMM_NULL));
 
 // The fluid's excess load on the bottom wall in the same unit: the mean excess pore
 // pressure over the base as the wall feels it (a transducer's reading in the continuum,
@@ -52,6 +56,7 @@ double wall_load_base(const DemParticles& s, double k, double area, const BasePo
 // error: in the reduced sand column at rest 0.37 while the wall carries 0.91 x eq. 15 in
 // contacts and this load is 0.014.
 double fluid_load_base(const FluidParticles& f, const DemParticles& s, double walls_on_spheres_z,
-                       const HydrostaticPressure& ph, double area, const BasePorePressure& b);
+                       const HydrostaticPressure& ph, double area, const BasePorePressure& b,
+                       const RankComm& comm = RankComm(MPI_COMM_NULL));
 
 }  // namespace sphdem

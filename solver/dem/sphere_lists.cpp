@@ -116,10 +116,10 @@ void SphereLists::write(CheckpointWriter& w, const DemParticles& s) const {
       mr[3 * k + d] = records[k].state.mr[d];
     }
   }
-  w.array("contacts/id", id);
-  w.array("contacts/partner", partner);
-  w.array("contacts/xi", xi);
-  w.array("contacts/mr", mr);
+  w.distributed("contacts/id", id, id.size());  // each rank its spheres' records
+  w.distributed("contacts/partner", partner, partner.size());
+  w.distributed("contacts/xi", xi, xi.size());
+  w.distributed("contacts/mr", mr, mr.size());
   w.scalar("dem/reach_needed", reach_.needed);
   w.scalar("dem/reach_wanted", reach_.wanted);
   w.scalar("dem/reach_sphere_kernel", reach_.sphere_kernel);

@@ -24,4 +24,15 @@ bool Decomposition::balance(double threshold, bool force) {
   return recut;
 }
 
+void Decomposition::restore(std::vector<std::uint32_t> first, std::vector<std::uint64_t> counts) {
+  if (!first.empty()) part_.first = std::move(first);
+  if (counts.size() == counts_.size()) counts_ = std::move(counts);
+}
+
+std::vector<std::uint64_t> Decomposition::summed_counts() const {
+  std::vector<std::uint64_t> c = counts_;
+  comm_.sum(c);
+  return c;
+}
+
 }  // namespace sphdem

@@ -31,6 +31,12 @@ class Decomposition {
   // The summed counts' max / mean over the current cuts; recut when above threshold (or
   // always with force). Clears the counts. Returns whether the cuts changed. Collective.
   bool balance(double threshold = 1.10, bool force = false);
+  // A run continued: the cuts it had (same rank count) and the work it had counted since
+  // its last balance, summed over its ranks (given on one rank, zero on the others: the
+  // next balance sums them alike).
+  void restore(std::vector<std::uint32_t> first, std::vector<std::uint64_t> counts);
+  // The work counted since the last balance, summed over the ranks. Collective.
+  std::vector<std::uint64_t> summed_counts() const;
   // The imbalance the last balance() found before it recut, and after.
   double imbalance_before() const { return before_; }
   double imbalance_after() const { return after_; }

@@ -54,6 +54,33 @@ void RankComm::max(std::vector<double>& values) const {
                 comm_);
 }
 
+void RankComm::sum(std::vector<double>& values) const {
+  if (!parallel() || values.empty()) return;
+  // gathered and added in rank order on every rank: the same bits on each, run after run
+  std::vector<double> all(values.size() * size_);
+  MPI_Allgather(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, all.data(),
+                static_cast<int>(values.size()), MPI_DOUBLE, comm_);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    double s = 0.0;
+    for (int q = 0; q < size_; ++q) s += all[q * values.size() + i];
+    values[i] = s;
+  }
+}
+
+std::string RankComm::broadcast(const std::string& text, int root) const {
+  if (!parallel()) return text;
+  std::uint64_t n = text.size();
+  MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG, root, comm_);
+  std::string out = text;
+  out.resize(n);
+  MPI_Bcast(out.data(), static_cast<int>(n), MPI_CHAR, root, comm_);
+  return out;
+}
+
+void RankComm::barrier() const {
+  if (parallel()) MPI_Barrier(comm_);
+}
+
 std::vector<std::uint64_t> RankComm::counts(const std::vector<std::uint64_t>& send_count) const {
   if (!parallel()) return send_count;
   std::vector<std::uint64_t> recv(size_);

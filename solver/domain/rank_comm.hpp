@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace sphdem {
@@ -26,6 +27,9 @@ class RankComm {
   double max(double value) const;
   double min(double value) const;
   void max(std::vector<double>& values) const;  // in place, element by element
+  void sum(std::vector<double>& values) const;  // in place (floating point: order of ranks)
+  std::string broadcast(const std::string& text, int root) const;  // root's text on every rank
+  void barrier() const;
 
   // Every rank sends send_count[q] items of `bytes` bytes each to rank q from `send`
   // (grouped by destination, in rank order) and receives into `recv` (grouped by source,

@@ -1,7 +1,8 @@
 #pragma once
 // A particle container's carried state (the registry's state fields, owned particles
 // only) written to and read from a checkpoint group ("fluid/", "spheres/"). Scratch
-// fields are not written: the first step recomputes them.
+// fields are not written: the first step recomputes them. On ranks each writes its slice
+// (in rank order: the file one rank would write of the particles in that order).
 #include <string>
 
 #include "domain/field_info.hpp"
@@ -12,7 +13,7 @@ namespace sphdem {
 template <class Particles>
 void write_particle_state(CheckpointWriter& w, const std::string& group, const Particles& p) {
   p.for_each_field([&](const FieldInfo& field, const auto& v) {
-    if (field.state()) w.array(group + field.name, v.data(), p.n_owned);
+    if (field.state()) w.distributed(group + field.name, v.data(), p.n_owned);
   });
 }
 

@@ -354,7 +354,7 @@ void DemSubstepper::substeps_apart(double h, int count, double weight) {
 void DemSubstepper::write_state(CheckpointWriter& w) const {
   write_particle_state(w, "spheres/", s_);
   lists_.write(w, s_);
-  w.scalar("dem/drag_rate_max", drag_.rate_max);
+  w.scalar("dem/drag_rate_max", lists_.halo().comm().max(drag_.rate_max));  // (over ranks)
 }
 
 DemParticles DemSubstepper::read_spheres(const CheckpointReader& r) {

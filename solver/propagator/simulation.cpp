@@ -86,12 +86,59 @@ Simulation::Simulation(const Scene& scene, const CheckpointReader& r, const Rank
   // The next step re-sorts and rebuilds every list (as the run that wrote it did).
   steps_since_sort_ = sort_interval_ - 1;
   fluid_lists_stale_ = true;
-  if (comm_.parallel()) decompose(cell_size_);  // every rank read the whole file
+  if (comm_.parallel()) resume_share(r);  // every rank read the whole file
+}
+
+namespace {
+
+// Of the particles every rank read, the slice [first, first + count) in file order.
+template <class Particles>
+void keep_slice(Particles& p, std::size_t first, std::size_t count) {
+  p.for_each_field([&](const FieldInfo&, auto& v) {
+    std::copy(v.begin() + first, v.begin() + first + count, v.begin());
+    v.resize(count);
+  });
+  p.n_owned = count;
+}
+
+std::size_t slice_start(const std::vector<std::int64_t>& counts, int rank) {
+  std::size_t first = 0;
+  for (int q = 0; q < rank; ++q) first += static_cast<std::size_t>(counts[q]);
+  return first;
+}
+
+}  // namespace
+
+// Several ranks, continuing a run: written on as many ranks, each takes back its own slice
+// with the cuts and the counted work (the run goes on bit for bit); on another count, each
+// keeps the particles in its cells of a fresh cut by the work the run had counted.
+void Simulation::resume_share(const CheckpointReader& r) {
+  const double cell = r.has("ranks/grid_cell") ? r.scalar<double>("ranks/grid_cell") : cell_size_;
+  const auto fluid_count = r.array<std::int64_t>("ranks/fluid_count");
+  const auto sphere_count = r.array<std::int64_t>("ranks/sphere_count");
+  std::vector<std::uint64_t> work;
+  if (r.has("ranks/work") && comm_.rank() == 0)  // summed once, at the next balance
+    for (const std::int64_t w : r.array<std::int64_t>("ranks/work")) work.push_back(w);
+  const int R = comm_.size(), me = comm_.rank();
+  if (static_cast<int>(fluid_count.size()) == R && r.has("ranks/cuts")) {
+    decompose(cell, /*keep_cells=*/false);
+    keep_slice(fluid_, slice_start(fluid_count, me), fluid_count[me]);
+    keep_slice(dem_.spheres(), slice_start(sphere_count, me), sphere_count[me]);
+    std::vector<std::uint32_t> cuts;
+    for (const std::int64_t c : r.array<std::int64_t>("ranks/cuts")) cuts.push_back(c);
+    work.resize(decomposition_->grid().cell_count(), 0);
+    decomposition_->restore(std::move(cuts), std::move(work));
+    return;
+  }
+  decompose(cell, /*keep_cells=*/true);
+  work.resize(decomposition_->grid().cell_count(), 0);
+  decomposition_->restore({}, std::move(work));
 }
 
 // Several ranks: the box's Hilbert-ordered cells of at least `cell` (the fluid lists' cell)
-// cut by cell count, and of the global set every rank holds, the share in its cells kept.
-void Simulation::decompose(double cell) {
+// cut by cell count, and (keep_cells) of the global set every rank holds, the share in its
+// cells kept.
+void Simulation::decompose(double cell, bool keep_cells) {
   const SfcGrid grid(params_.box, cell);
   if (grid.cell_count() < static_cast<std::size_t>(comm_.size()))
     throw std::runtime_error(fmt::format(
@@ -99,6 +146,9 @@ void Simulation::decompose(double cell) {
         "most {} ranks, or enlarge the domain",
         scene_.name, comm_.size(), grid.cell_count(), cell, grid.cell_count()));
   decomposition_.emplace(comm_, params_.box, cell);
+  grid_cell_ = cell;
+  dem_.set_decomposition(&*decomposition_);
+  if (!keep_cells) return;
   FluidParticles& f = fluid_;
   f.resize(f.n_owned);
   std::vector<int> dest(f.n_owned);
@@ -112,7 +162,6 @@ void Simulation::decompose(double cell) {
   for (std::size_t i = 0; i < s.n_owned; ++i)
     dest[i] = decomposition_->owner(box.wrap(0, s.x[i]), box.wrap(1, s.y[i]), s.z[i]);
   keep_share(comm_, s, dest);
-  dem_.set_decomposition(&*decomposition_);
 }
 
 // Several ranks, at a rebuild: the work counted since the last one summed, the curve recut
@@ -137,6 +186,18 @@ bool Simulation::lists_stale() const {
 }
 
 void Simulation::write_state(CheckpointWriter& w) const {
+  // each rank's slice of the particle datasets, in rank order
+  w.distributed("ranks/fluid_count",
+                std::vector<std::int64_t>{static_cast<std::int64_t>(fluid_.n_owned)}, 1);
+  w.distributed("ranks/sphere_count",
+                std::vector<std::int64_t>{static_cast<std::int64_t>(dem_.spheres().n_owned)}, 1);
+  if (decomposition_) {  // the cuts and the work counted since the last balance
+    w.scalar("ranks/grid_cell", grid_cell_);
+    const std::vector<std::uint32_t>& first = decomposition_->partition().first;
+    w.array("ranks/cuts", std::vector<std::int64_t>(first.begin(), first.end()));
+    const std::vector<std::uint64_t> work = decomposition_->summed_counts();
+    w.array("ranks/work", std::vector<std::int64_t>(work.begin(), work.end()));
+  }
   write_particle_state(w, "fluid/", fluid_);
   dem_.write_state(w);
   w.scalar("run/time", time_);
@@ -182,7 +243,8 @@ void Simulation::build_initial_state() {
     fluid_.inv_h[a] = 1.0 / fluid_.h[a];
     fluid_.eps[a] = 1.0;
   }
-  if (comm_.parallel()) decompose(fluid_cutoff() * (1.0 + kFluidSkin / kernel::kSupport));
+  if (comm_.parallel())
+    decompose(fluid_cutoff() * (1.0 + kFluidSkin / kernel::kSupport), /*keep_cells=*/true);
   // m/rho = dx^3 for the double smoothing (3.10)
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
     fluid_.rho[a] = p.eos.rho0;

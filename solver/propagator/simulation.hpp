@@ -119,7 +119,8 @@ class Simulation {
 
  private:
   void build_initial_state();
-  void decompose(double cell);
+  void decompose(double cell, bool keep_cells);
+  void resume_share(const CheckpointReader& r);
   void distribute_fluid();
   bool lists_stale() const;
   void advance(bool hold_spheres);
@@ -150,6 +151,7 @@ class Simulation {
   FluidParticles fluid_;
   DemSubstepper dem_;
   std::optional<Decomposition> decomposition_;  // on several ranks
+  double grid_cell_ = 0;                        // the decomposition's smallest cell
   int rebalance_interval_ = 0;
   bool force_rebalance_ = false;
   bool in_step_ = false;  // between a step's predictor and corrector

@@ -29,11 +29,12 @@ std::string CheckpointStore::directory(const std::string& run_dir) {
   return (fs::path(run_dir) / "checkpoints").string();
 }
 
-CheckpointStore::CheckpointStore(std::string run_dir, int keep)
-    : dir_(directory(run_dir)), keep_(std::max(1, keep)) {
+CheckpointStore::CheckpointStore(std::string run_dir, int keep, const RankComm& comm)
+    : dir_(directory(run_dir)), keep_(std::max(1, keep)), comm_(comm) {
   std::error_code ec;
-  fs::create_directories(dir_, ec);
-  if (ec) throw CheckpointError("cannot create " + dir_ + ": " + ec.message());
+  if (comm_.rank() == 0) fs::create_directories(dir_, ec);
+  const std::string why = comm_.broadcast(ec ? ec.message() : std::string(), 0);
+  if (!why.empty()) throw CheckpointError("cannot create " + dir_ + ": " + why);
   const auto existing = list(run_dir);
   if (!existing.empty()) last_ = existing.back();
 }
@@ -56,25 +57,27 @@ std::string CheckpointStore::write(long step, const std::function<void(Checkpoin
       (fs::path(dir_) / fmt::format("{}{:012d}{}", kPrefix, step, kSuffix)).string();
   const std::string tmp = path + ".tmp";
   try {
-    CheckpointWriter w(tmp);
+    CheckpointWriter w(tmp, comm_);
     fill(w);
     w.finish();
   } catch (const CheckpointError& e) {
     std::error_code ec;
-    fs::remove(tmp, ec);
+    if (comm_.rank() == 0) fs::remove(tmp, ec);
     throw CheckpointError(fmt::format("{}; {}", e.what(),
                                       last_.empty()
                                           ? std::string("no earlier checkpoint")
                                           : "the previous checkpoint " + last_ + " is whole"));
   }
   std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw CheckpointError("cannot rename " + tmp + ": " + ec.message());
+  if (comm_.rank() == 0) {
+    fs::rename(tmp, path, ec);
+    if (ec) fs::remove(tmp, ec);
   }
-  sync_directory(dir_);
+  const std::string why = comm_.broadcast(ec ? ec.message() : std::string(), 0);
+  if (!why.empty()) throw CheckpointError("cannot rename " + tmp + ": " + why);
   last_ = path;
+  if (comm_.rank() != 0) return path;
+  sync_directory(dir_);
   // the newest keep_ stay (and any stray temporary file of a killed run goes)
   auto all = list(fs::path(dir_).parent_path().string());
   for (std::size_t k = 0; k + keep_ < all.size(); ++k) fs::remove(all[k], ec);

@@ -9,13 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "domain/rank_comm.hpp"
 #include "io/checkpoint_file.hpp"
 
 namespace sphdem {
 
 class CheckpointStore {
  public:
-  CheckpointStore(std::string run_dir, int keep);
+  // On ranks every rank writes its slices into one file (collective); rank 0 renames it
+  // and removes the old ones.
+  CheckpointStore(std::string run_dir, int keep, const RankComm& comm = RankComm(MPI_COMM_NULL));
 
   // Writes the checkpoint of `step` with `fill`. On failure (a full disk, a file-size
   // limit) removes the partial file and throws CheckpointError naming the file, the
@@ -38,6 +41,7 @@ class CheckpointStore {
  private:
   std::string dir_;
   int keep_;
+  RankComm comm_;
   std::string last_;
 };
 

@@ -139,12 +139,20 @@ const char* isa_name(PairIsa isa) {
 RunSummary run_scene(const Scene& scene, RunOptions opt) {
   namespace fs = std::filesystem;
   refuse_scene_past_limits(scene);
-  fs::create_directories(opt.out_dir);
-  {
+  // On ranks (mpirun): every rank steps its share; rank 0 alone writes case.yaml, log.csv
+  // and the progress lines, from diagnostics reduced over the ranks.
+  const RankComm comm;
+  const bool root = comm.rank() == 0;
+  if (comm.parallel() && !opt.hooks.empty())
+    throw std::runtime_error(
+        "in-situ analysis and VTK snapshots on several ranks: not yet (issue 36); run with "
+        "--no-insitu and output.vtk_every: 0, or on one rank");
+  if (root) {
+    fs::create_directories(opt.out_dir);
     std::ofstream cy(fs::path(opt.out_dir) / "case.yaml");
     cy << scene_to_yaml(scene);
   }
-  std::ostream* out = opt.progress;
+  std::ostream* out = root ? opt.progress : nullptr;
   const auto t_start = Clock::now();
   const CheckpointReader* resume = opt.resume;
   const int threads = omp_get_max_threads();
@@ -161,19 +169,30 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
           "has {} with {}: it continues the run exactly only on the same\n",
           was, isa, threads, isa_name(best_pair_isa()));
   }
-  std::unique_ptr<Simulation> simulation =
-      resume ? std::make_unique<Simulation>(scene, *resume) : std::make_unique<Simulation>(scene);
+  std::unique_ptr<Simulation> simulation = resume
+                                               ? std::make_unique<Simulation>(scene, *resume, comm)
+                                               : std::make_unique<Simulation>(scene, comm);
   Simulation& sim = *simulation;
+  const std::uint64_t fluid_total = comm.sum(sim.fluid_count());
+  const std::uint64_t wall_total = comm.sum(sim.wall_count());
+  const std::uint64_t sphere_total = comm.sum(sim.spheres().n_owned);
   if (out && !resume)
-    *out << fmt::format("sphdem: {} fluid + {} wall SPH particles, {} spheres; relaxing {} steps\n",
-                        sim.fluid_count(), sim.wall_count(), sim.spheres().n_owned,
-                        scene.startup.relax_steps)
+    *out << fmt::format(
+                "sphdem: {} fluid + {} wall SPH particles, {} spheres{}; relaxing {} "
+                "steps\n",
+                fluid_total, wall_total, sphere_total,
+                comm.parallel() ? fmt::format(" on {} ranks", comm.size()) : "",
+                scene.startup.relax_steps)
          << std::flush;
   if (!resume) sim.relax();
   const std::string log_path = (fs::path(opt.out_dir) / "log.csv").string();
-  std::unique_ptr<RunLog> log =
-      resume ? std::make_unique<RunLog>(log_path, scene.species, sim.step_count())
-             : std::make_unique<RunLog>(log_path, scene.species);
+  std::unique_ptr<RunLog> log;  // rank 0's
+  if (root)
+    log = resume ? std::make_unique<RunLog>(log_path, scene.species, sim.step_count())
+                 : std::make_unique<RunLog>(log_path, scene.species);
+  auto write_log = [&](const Diagnostics& d) {
+    if (log) log->write(d);
+  };
 
   LoopState st;
   st.next_hook.assign(opt.hooks.size(), 0.0);
@@ -201,23 +220,18 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     }
   };
   if (!resume) {
-    log->write(diagnostics(sim));
+    write_log(diagnostics(sim));
     run_hooks(false);
   }
 
   RunSummary r;
-  CheckpointStore store(opt.out_dir, cs.keep);
+  CheckpointStore store(opt.out_dir, cs.keep, comm);
   auto write_checkpoint = [&] {
     const auto t0 = Clock::now();
     r.checkpoint = store.write(sim.step_count(), [&](CheckpointWriter& w) {
       sim.write_state(w);
       st.write(w, opt.hooks);
       w.text("scene/yaml", scene_to_yaml(scene));
-      // the ranks' slices of the particle datasets (one rank today)
-      w.array("ranks/fluid_count",
-              std::vector<std::int64_t>{static_cast<std::int64_t>(sim.fluid().n_owned)});
-      w.array("ranks/sphere_count",
-              std::vector<std::int64_t>{static_cast<std::int64_t>(sim.spheres().n_owned)});
       w.scalar<std::int64_t>("meta/threads", threads);
       w.text("meta/pair_isa", isa_name(best_pair_isa()));
     });
@@ -228,7 +242,6 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   // The watchdog's stop: the step's log row, the neighbourhood dump, and the message with
   // the last good checkpoint (the state now is not written).
   auto stop_by_watchdog = [&](const Simulation& s, const WatchdogAlarm& alarm) {
-    log->write(diagnostics(s));
     const fs::path dir = fs::path(opt.out_dir) / "watchdog";
     fs::create_directories(dir);
     const std::string dump = (dir / fmt::format("step_{:012d}.vtp", s.step_count())).string();
@@ -246,9 +259,30 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
       dumped = fmt::format("; the neighbourhood dump failed: {}", e.what());
     }
     const auto last = CheckpointStore::list(opt.out_dir);
-    throw WatchdogError(describe_alarm(alarm, s.step_count(), s.time()) + dumped +
-                        (last.empty() ? std::string("; no checkpoint was written")
-                                      : "; the last good checkpoint is " + last.back()));
+    return describe_alarm(alarm, s.step_count(), s.time()) + dumped +
+           (last.empty() ? std::string("; no checkpoint was written")
+                         : "; the last good checkpoint is " + last.back());
+  };
+  // Every rank takes the same decision: the watchdog's alarm on any rank stops them all
+  // (the lowest alarmed rank's message), a stop request on any rank asks all to stop, and
+  // the safeguards' counts are summed: one reduction a step.
+  auto after_step = [&](int& stop) {
+    const auto alarm = watchdog_check(sim, scene.watchdog);
+    std::vector<std::uint64_t> v{
+        alarm ? 1u : 0u, static_cast<std::uint64_t>(opt.stop_requested ? opt.stop_requested() : 0),
+        sim.voidage_clamped(), sim.omega_bounded()};
+    if (comm.parallel()) {
+      const std::vector<std::uint64_t> mine = v;
+      comm.sum(v);
+      v[1] = static_cast<std::uint64_t>(comm.max(static_cast<double>(mine[1])));
+    }
+    st.safeguards.add(v[2], v[3]);
+    stop = static_cast<int>(v[1]);
+    if (v[0] == 0) return;
+    write_log(diagnostics(sim));
+    const int first = static_cast<int>(-comm.max(alarm ? -comm.rank() : -comm.size()));
+    std::string why = alarm ? stop_by_watchdog(sim, *alarm) : std::string();
+    throw WatchdogError(comm.broadcast(why, first));
   };
 
   double step_seconds = 0;
@@ -261,15 +295,15 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     const auto t_step = Clock::now();
     sim.step();
     step_seconds += since(t_step);
-    if (const auto alarm = watchdog_check(sim, scene.watchdog)) stop_by_watchdog(sim, *alarm);
-    st.safeguards.add(sim.voidage_clamped(), sim.omega_bounded());
-    st.dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sim.spheres().n_owned;
+    int stop = 0;
+    after_step(stop);
+    st.dem_sphere_steps += static_cast<double>(sim.dem_substeps()) * sphere_total;
     const bool last = sim.time() >= end * (1.0 - 1e-12);
     if (sim.time() >= st.next_log * (1.0 - 1e-9) || last) {
       const Diagnostics d = diagnostics(sim);
       st.largest_overlap = std::max(st.largest_overlap, d.max_overlap_over_d);
       st.largest_density_error = std::max(st.largest_density_error, d.max_density_error);
-      log->write(d);
+      write_log(d);
       while (st.next_log <= sim.time() * (1.0 + 1e-9)) st.next_log += scene.output.log_interval;
     }
     run_hooks(last);
@@ -293,7 +327,6 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
       while (st.next_checkpoint <= sim.time() * (1.0 + 1e-9)) st.next_checkpoint += cs.every;
     }
     if (cs.wall_interval > 0 && since(t_checkpoint) >= cs.wall_interval) checkpoint_due = true;
-    const int stop = opt.stop_requested ? opt.stop_requested() : 0;
     if (stop && !r.stopped_by) {
       r.stopped_by = stop;
       checkpoint_due = true;
@@ -311,7 +344,8 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   }
   const bool finished = sim.time() >= end * (1.0 - 1e-12);
   if (finished && (cs.at_end || checkpoint_due)) write_checkpoint();
-  if (finished) write_sediment_output(sim, opt.out_dir);
+  if (finished && !comm.parallel())  // (per sphere: not yet gathered from ranks)
+    write_sediment_output(sim, opt.out_dir);
   r.safeguards = st.safeguards;
   r.steps = sim.step_count();
   r.step_seconds = step_seconds;
@@ -320,7 +354,8 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   r.wall_seconds = since(t_start);
   const double loop = since(t_loop);
   const double steps_here = static_cast<double>(sim.step_count() - first_step);
-  r.fluid_particle_steps_per_second = static_cast<double>(sim.fluid().n_owned) * steps_here / loop;
+  r.fluid_particle_steps_per_second =
+      static_cast<double>(comm.sum(sim.fluid().n_owned)) * steps_here / loop;
   r.sphere_particle_steps_per_second = st.dem_sphere_steps / loop;
   r.largest_overlap = st.largest_overlap;
   r.largest_density_error = st.largest_density_error;
@@ -340,14 +375,14 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     *out << fmt::format("sphdem: {} checkpoint(s), {:.2f} s, {:.2f} % of the step time; last {}\n",
                         r.checkpoints_written, r.checkpoint_seconds,
                         100.0 * r.checkpoint_seconds / std::max(step_seconds, 1e-30), r.checkpoint);
-  *out << "sphdem: " << r.safeguards.describe(sim.fluid().n_owned) << "\n";
-  if (sim.fluid().n_owned > 0)
+  *out << "sphdem: " << r.safeguards.describe(fluid_total + wall_total) << "\n";
+  if (fluid_total > 0)
     *out << fmt::format(
         "sphdem: largest density error over the logged steps {:.2g} % (expected {:.2g} % from c0; "
         "limit 1 %{})\n",
         100 * r.largest_density_error, 100 * sound_speed_report(scene).expected_density_error(),
         r.largest_density_error > 0.01 ? ": raise fluid.sound_speed" : "");
-  if (sim.spheres().n_owned > 0)
+  if (sphere_total > 0)
     *out << fmt::format("sphdem: largest overlap over the logged steps {:.3g} d{}\n",
                         r.largest_overlap,
                         r.largest_overlap > scene.contact.max_overlap
@@ -355,7 +390,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
                                           "(contact.stiffness) or a slower impact",
                                           scene.contact.max_overlap)
                             : fmt::format(" (contact.max_overlap {})", scene.contact.max_overlap));
-  if (const MultirateTally& m = sim.multirate_tally(); scene.time.multirate && m.half_steps > 0)
+  if (const MultirateTally& m = sim.multirate_tally(); sim.multirate() && m.half_steps > 0)
     *out << fmt::format(
         "sphdem: time.multirate: the spheres out of contact took the fluid's step in {} of {} DEM "
         "half steps ({:.2g} % of the spheres sub-stepped in those); {} tried and sent back\n",
