@@ -233,6 +233,11 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "validate a scene and print its derived numbers");
   check->add_option("case", case_file, "scene file (YAML)")->required()->check(CLI::ExistingFile);
   check->add_option("--set", overrides, "override a scene key")->allow_extra_args(false);
+  int check_ranks = 1;
+  check
+      ->add_option("--ranks", check_ranks,
+                   "also the memory per rank and the wall time on this many MPI ranks")
+      ->check(CLI::Range(1, 1 << 20));
   check->add_option("--fidelity", fidelity, "preset for the keys the scene leaves unset")
       ->check(CLI::IsMember(presets));
 
@@ -303,7 +308,7 @@ int main(int argc, char** argv) {
         sets.push_back(std::string("fidelity=") + p.name);
         presets.push_back(sphdem::load_scene(case_file, sets));
       }
-      std::cout << sphdem::describe_scene(scene, presets);
+      std::cout << sphdem::describe_scene(scene, presets, check_ranks);
       if (!breaches.empty())
         std::cerr << fmt::format("sphdem: {} limit(s) broken: `sphdem run` refuses this scene\n",
                                  breaches.size());

@@ -5,22 +5,6 @@
 
 namespace sphdem {
 
-namespace {
-
-// The squared distance from a point to a cell's box.
-double distance2_to_cell(const SfcGrid& grid, std::uint32_t cell, const double p[3]) {
-  const std::array<int, 3> c = grid.cell(cell);
-  double r2 = 0.0;
-  for (int d = 0; d < 3; ++d) {
-    const double lo = grid.box().lo[d] + c[d] * grid.cell_size(d), hi = lo + grid.cell_size(d);
-    const double out = p[d] < lo ? lo - p[d] : p[d] > hi ? p[d] - hi : 0.0;
-    r2 += out * out;
-  }
-  return r2;
-}
-
-}  // namespace
-
 void RankHalo::build(const RankComm& comm, const SfcGrid& grid, const SfcPartition& part,
                      double reach_m, const double* x, const double* y, const double* z,
                      std::size_t n_owned) {
@@ -57,7 +41,7 @@ void RankHalo::build(const RankComm& comm, const SfcGrid& grid, const SfcPartiti
       const double p[3] = {x[i] + shift[0], y[i] + shift[1], z[i] + shift[2]};
       bool needed = false;  // within the reach of one of the receiver's cells
       for (std::size_t t = 0; !needed && t < s.targets.size(); ++t)
-        needed = distance2_to_cell(grid, s.targets[t], p) <= reach2;
+        needed = grid.distance2_to_cell(s.targets[t], p) <= reach2;
       if (!needed) continue;
       send_index_.push_back(i);
       send_shift.insert(send_shift.end(), shift, shift + 3);

@@ -79,4 +79,15 @@ std::array<int, 3> SfcGrid::cell(std::size_t index) const {
   return {ix, iy, iz};
 }
 
+double SfcGrid::distance2_to_cell(std::size_t index, const double p[3]) const {
+  const std::array<int, 3> c = cell(index);
+  double r2 = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    const double lo = box_.lo[d] + c[d] * size_[d], hi = lo + size_[d];
+    const double out = p[d] < lo ? lo - p[d] : p[d] > hi ? p[d] - hi : 0.0;
+    r2 += out * out;
+  }
+  return r2;
+}
+
 }  // namespace sphdem

@@ -32,6 +32,8 @@ class SfcGrid {
     return (std::size_t(c[2]) * n_[1] + c[1]) * n_[0] + c[0];
   }
   std::array<int, 3> cell(std::size_t index) const;
+  // The squared distance from the point p to the box of the cell with this index.
+  double distance2_to_cell(std::size_t index, const double p[3]) const;
   std::uint64_t key(const std::array<int, 3>& c) const {
     return hilbert_key(std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2]), bits_);
   }

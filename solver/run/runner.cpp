@@ -18,6 +18,7 @@
 #include "io/checkpoint_file.hpp"
 #include "propagator/simulation.hpp"
 #include "run/checkpoints.hpp"
+#include "run/rank_forecast.hpp"
 #include "run/run_log.hpp"
 #include "run/safeguard_tally.hpp"
 #include "run/sediment_forecast.hpp"
@@ -442,7 +443,7 @@ std::string describe_presets(const Scene& sc, const std::vector<Scene>& presets,
 }
 }  // namespace
 
-std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
+std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets, int ranks) {
   const double resident_before = peak_resident_mib();
   const double start_cpu = process_cpu_seconds();  // the program's start, as a run's
   const auto t_setup = Clock::now();
@@ -581,6 +582,28 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets) {
       "the initial state and one step ({:.0f} -> {:.0f} MiB; particle arrays with their halo "
       "copies {:.1f} MiB, the rest lists and scratch; in-situ analysis not included)\n",
       mib_peak - resident_before, resident_before, mib_peak, mb);
+  if (ranks > 1) {
+    const RankForecast rf = forecast_ranks(sim, ranks);
+    const double particles = static_cast<double>(sim.fluid().size() + sim.spheres().size());
+    const double per_rank = static_cast<double>(rf.owned_max + rf.ghosts_max) / particles;
+    s += fmt::format(
+        "{:<17}the cuts by the counted work: the largest rank owns {} particles and "
+        "holds {} halo copies ({:.2f} copies per owned particle over all ranks), and takes "
+        "{:.1f} % of the work (max/mean {:.2f})\n"
+        "                 memory about {:.0f} MiB per rank ({:.0f} MiB of the process, and the "
+        "scene's {:.0f} MiB times its particles' share {:.3f}); {:.0f} MiB for all ranks\n"
+        "                 wall time about {} with {} threads a rank ({} cores): the steps' "
+        "time times the largest share; the exchanges between ranks are not counted (on one "
+        "2-core machine 2 ranks x 1 thread took 1.3-1.5 x the time of 1 rank x 2 threads, "
+        "bench/RESULTS.md)\n",
+        fmt::format("on {} ranks", ranks), rf.owned_max, rf.ghosts_max, rf.ghosts_per_owned,
+        100.0 * rf.largest_share, rf.largest_share * ranks,
+        resident_before + (mib_peak - resident_before) * per_rank, resident_before,
+        mib_peak - resident_before, per_rank,
+        ranks * (resident_before + (mib_peak - resident_before) * per_rank),
+        format_duration(setup_wall + (run_wall - setup_wall) * rf.largest_share), timing.threads,
+        ranks * timing.threads);
+  }
   return s;
 }
 

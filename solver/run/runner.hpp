@@ -63,6 +63,8 @@ RunSummary run_scene(const Scene& scene, RunOptions options);
 // With `presets` (the same scene file loaded at each fidelity), the presets side by side:
 // their settings, expected density error and overlap, and wall time estimated from the
 // timed step scaled by each preset's fluid particles and acoustic steps.
-std::string describe_scene(const Scene& scene, const std::vector<Scene>& presets = {});
+// ranks > 1: also the scene on that many MPI ranks (run/rank_forecast.hpp).
+std::string describe_scene(const Scene& scene, const std::vector<Scene>& presets = {},
+                           int ranks = 1);
 
 }  // namespace sphdem
