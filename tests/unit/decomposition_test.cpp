@@ -146,7 +146,7 @@ void expect_halo_complete(const Box& box, double reach, double min_cell, int R, 
             if (r2 > reach * reach) continue;
             if (ri == rj && s == std::array<int, 3>{0, 0, 0}) continue;  // both owned by one rank
             ++needed;
-            const HaloSend want{static_cast<std::uint32_t>(grid.index(cj)), ri, s};
+            const HaloSend want{static_cast<std::uint32_t>(grid.index(cj)), ri, s, {}};
             ASSERT_TRUE(std::binary_search(sends[rj].begin(), sends[rj].end(), want))
                 << "R " << R << ": rank " << rj << " does not send cell " << want.cell
                 << " to rank " << ri << " at image (" << s[0] << "," << s[1] << "," << s[2] << ")";
