@@ -7,16 +7,26 @@ namespace sphdem {
 Decomposition::Decomposition(const RankComm& comm, const Box& box, double min_cell)
     : comm_(comm), grid_(box, min_cell), counts_(grid_.cell_count(), 0) {
   part_ = partition_curve(grid_, counts_, comm_.size());  // no work yet: equal cell counts
+  first_cuts_ = part_;
 }
 
 bool Decomposition::balance(double threshold, bool force) {
   comm_.sum(counts_);
   before_ = load_imbalance(rank_weights(grid_, part_, counts_));
   after_ = before_;
+  if (std::any_of(counts_.begin(), counts_.end(), [](std::uint64_t c) { return c > 0; })) {
+    const double fixed = load_imbalance(rank_weights(grid_, first_cuts_, counts_));
+    ++record_.balances;
+    record_.within += before_ <= threshold;
+    record_.worst = std::max(record_.worst, before_);
+    record_.fixed_within += fixed <= threshold;
+    record_.fixed_worst = std::max(record_.fixed_worst, fixed);
+  }
   bool recut = false;
   if (force || before_ > threshold) {
     SfcPartition next = partition_curve(grid_, counts_, comm_.size());
     recut = next.first != part_.first;
+    record_.recuts += recut;
     part_ = std::move(next);
     after_ = load_imbalance(rank_weights(grid_, part_, counts_));
   }
@@ -26,6 +36,7 @@ bool Decomposition::balance(double threshold, bool force) {
 
 void Decomposition::restore(std::vector<std::uint32_t> first, std::vector<std::uint64_t> counts) {
   if (!first.empty()) part_.first = std::move(first);
+  first_cuts_ = part_;  // (the control of this sitting)
   if (counts.size() == counts_.size()) counts_ = std::move(counts);
 }
 

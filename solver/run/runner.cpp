@@ -397,6 +397,15 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
         "half steps ({:.2g} % of the spheres sub-stepped in those); {} tried and sent back\n",
         m.multirate, m.half_steps, 100.0 * m.near_spheres / std::max(m.owned_spheres, 1.0),
         m.sent_back);
+  if (const Decomposition* dec = sim.decomposition(); dec && dec->record().balances > 0) {
+    const Decomposition::Record& b = dec->record();
+    *out << fmt::format(
+        "sphdem: load balance over {} ranks, {} balances: max/mean within 1.10 before {:.1f} % "
+        "of them (worst {:.3f}), {} recuts; the first cuts kept would have been within 1.10 at "
+        "{:.1f} % (worst {:.3f})\n",
+        comm.size(), b.balances, 100.0 * b.within / b.balances, b.worst, b.recuts,
+        100.0 * b.fixed_within / b.balances, b.fixed_worst);
+  }
   if (r.stopped_by)
     *out << fmt::format(
         "sphdem: stopped at t = {:.6g} s (step {}); checkpoint {}. Continue with: sphdem resume "
