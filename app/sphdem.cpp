@@ -71,12 +71,12 @@ int print_or_update_docs(const std::string& block, const std::vector<std::string
 int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bool no_insitu,
                       const sphdem::CheckpointReader* resume) {
   const sphdem::RankComm comm;
-  if (comm.parallel() && (scene.output.vtk_every > 0 || (scene.insitu.enabled && !no_insitu))) {
+  if (comm.parallel() && scene.insitu.enabled && !no_insitu) {
     if (comm.rank() == 0)
       std::cerr << fmt::format(
-          "sphdem: error: {} ranks: the in-situ analysis and VTK snapshots do not run on ranks "
-          "yet (issue 36); add --no-insitu{}, or run on one rank\n",
-          comm.size(), scene.output.vtk_every > 0 ? " and --set output.vtk_every=0" : "");
+          "sphdem: error: {} ranks: the in-situ analysis does not run on ranks yet (issue 36); "
+          "add --no-insitu (VTK snapshots, output.vtk_every, do), or run on one rank\n",
+          comm.size());
     return 2;
   }
   sphdem::RunOptions opt;
@@ -121,7 +121,7 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
   }
   if (scene.output.vtk_every > 0) {
     snapshots = std::make_unique<sphdem::VtkSnapshots>(
-        (std::filesystem::path(out_dir) / "vtk").string(), 0, 1);
+        (std::filesystem::path(out_dir) / "vtk").string(), comm.rank(), comm.size());
     if (resume) snapshots->resume(resume_time);
     opt.hooks.push_back(
         {"VTK snapshots", scene.output.vtk_every, [&](const sphdem::Simulation& sim, long) {

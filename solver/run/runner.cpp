@@ -144,10 +144,6 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   // and the progress lines, from diagnostics reduced over the ranks.
   const RankComm comm;
   const bool root = comm.rank() == 0;
-  if (comm.parallel() && !opt.hooks.empty())
-    throw std::runtime_error(
-        "in-situ analysis and VTK snapshots on several ranks: not yet (issue 36); run with "
-        "--no-insitu and output.vtk_every: 0, or on one rank");
   if (root) {
     fs::create_directories(opt.out_dir);
     std::ofstream cy(fs::path(opt.out_dir) / "case.yaml");
