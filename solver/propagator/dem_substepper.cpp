@@ -28,7 +28,6 @@ void DemSubstepper::set_decomposition(const Decomposition* d) {
     throw std::runtime_error(
         "rigid groups (spheres.*.rigid) on several ranks: not yet summed over ranks; run this "
         "scene on one rank (without mpirun)");
-  p_.multirate = false;
   lists_.set_decomposition(d);
 }
 

@@ -33,7 +33,7 @@ class DemSubstepper {
                 const RankComm& comm = RankComm(MPI_COMM_NULL));
   // Several ranks: the decomposition the fluid shares (the spheres migrate at each list
   // rebuild and the contact rows read halo copies refreshed every sub-step). Rigid groups
-  // are refused there (not yet summed over ranks), and the multi-rate half step is off.
+  // are refused there (not yet summed over ranks).
   void set_decomposition(const Decomposition* d);
   DemParticles& spheres() { return s_; }
   const DemParticles& spheres() const { return s_; }

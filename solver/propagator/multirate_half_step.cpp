@@ -11,10 +11,12 @@ namespace sphdem {
 
 bool MultirateHalfStep::take(const DemStepParams& p, DemParticles& s, SphereLists& lists,
                              SphereDrag& drag, double dt, double h, int count) {
-  const long n = static_cast<long>(s.n_owned);
+  long n = static_cast<long>(s.n_owned);
+  const RankComm& comm = lists.halo().comm();  // every decision below the same on each rank
   const double T = 0.5 * dt;
-  const double free_bound = std::min(
-      p.free_dt_max, drag.rate_max > 0.0 ? p.drag_time_fraction / drag.rate_max : p.dt_max);
+  const double rate = comm.max(drag.rate_max);
+  const double free_bound =
+      std::min(p.free_dt_max, rate > 0.0 ? p.drag_time_fraction / rate : p.dt_max);
   const int free_count = std::max(1, static_cast<int>(std::ceil(T / free_bound)));
   if (2 * free_count > count) return false;  // little to gain
   double v2 = 0.0, a2 = 0.0;
@@ -23,8 +25,15 @@ bool MultirateHalfStep::take(const DemStepParams& p, DemParticles& s, SphereList
     v2 = std::max(v2, s.vx[j] * s.vx[j] + s.vy[j] * s.vy[j] + s.vz[j] * s.vz[j]);
     a2 = std::max(a2, s.ax[j] * s.ax[j] + s.ay[j] * s.ay[j] + s.az[j] * s.az[j]);
   }
+  if (comm.parallel()) {
+    std::vector<double> m{v2, a2};
+    comm.max(m);
+    v2 = m[0];
+    a2 = m[1];
+  }
   const double margin = p.multirate_margin * (std::sqrt(v2) * T + 0.5 * std::sqrt(a2) * T * T);
   if (!lists.holds_for(s, 0.5 * margin)) return false;  // the list must last
+  n = static_cast<long>(s.n_owned);  // (on ranks a rebuild there migrates spheres)
   // the spheres within the margin of a contact (each pair is in both rows)
   const ContactNeighbourList& contacts = lists.contacts();
   const HaloImages images = lists.halo().images();
@@ -40,13 +49,13 @@ bool MultirateHalfStep::take(const DemStepParams& p, DemParticles& s, SphereList
     }
     if (near) near_.push_back(static_cast<std::uint32_t>(i));
   }
-  if (2 * near_.size() > s.n_owned) return false;  // mostly in contact
+  if (2 * comm.sum(near_.size()) > comm.sum(s.n_owned)) return false;  // mostly in contact
   saved_.save(s, s.n_owned);
   if (p.rotation) keep_near_history(lists);
   double free_reach = 0.0, near_reach = 0.0, rate_free = 0.0, rate_near = 0.0;
   for (int k = 0; k < free_count; ++k) {
     const double hf = T / free_count;
-    free_reach += std::sqrt(free_step(p, s, drag, hf, 0.5 * hf / dt, k == 0));
+    free_reach += std::sqrt(comm.max(free_step(p, s, drag, hf, 0.5 * hf / dt, k == 0)));
     rate_free = drag.rate_max;
   }
   saved_.restore(s, near_);  // the near spheres back to the start, then sub-stepped
@@ -171,6 +180,7 @@ double MultirateHalfStep::near_substeps(const Contact& contact, const DemStepPar
   double* const aoy = a_old_.y.data();
   double* const aoz = a_old_.z.data();
   double reach = 0.0, rate_max = 0.0;
+  const RankComm& comm = lists.halo().comm();
   for (int k = 0; k < count; ++k) {
     const double finish = k > 0 ? 0.5 * h : 0.0;  // the previous sub-step's corrector
     double max_step2 = 0.0;
@@ -183,7 +193,8 @@ double MultirateHalfStep::near_substeps(const Contact& contact, const DemStepPar
         predict_spin_of(s, j, h, t_old.x[q], t_old.y[q], t_old.z[q]);
       }
     }
-    reach += std::sqrt(max_step2);
+    reach += std::sqrt(comm.max(max_step2));
+    lists.refresh_for_contacts(s);  // ranks: the copies as their owners now stand
     rate_max = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : rate_max) if (m > kMinParallelSpheres)
     for (long q = 0; q < m; ++q) {

@@ -36,7 +36,7 @@ contact:
   stiffness: 100
   tangential: {model: linear_history, friction: 0.5}
 drag: {law: di_felice}
-time: {end: 0.004, multirate: false}
+time: {end: 0.004}
 startup: {relax_steps: 10}
 checkpoint: {every: 0.002, keep: 3}
 insitu: {enabled: false}

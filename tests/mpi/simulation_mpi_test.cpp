@@ -162,6 +162,13 @@ void agree_with_one_rank(const char* text, void (*prepare)(Simulation&), int blo
     if (comm.size() > 1 && block == blocks) {
       EXPECT_GT(f.moved + s.moved, 0u);  // the particles did migrate
     }
+    if (block == blocks && ns > 0) {  // the multi-rate half step was exercised on both
+      std::printf("multi-rate half steps: %ld of %ld on the ranks (rank 0), %ld of %ld on one\n",
+                  sim.multirate_tally().multirate, sim.multirate_tally().half_steps,
+                  one->multirate_tally().multirate, one->multirate_tally().half_steps);
+      EXPECT_GT(one->multirate_tally().multirate, 0);
+      EXPECT_EQ(sim.multirate_tally().multirate, one->multirate_tally().multirate);
+    }
   }
 }
 
@@ -169,8 +176,9 @@ TEST(RanksSimulation, StirredColumnAgreesWithOneRank) {
   agree_with_one_rank(kColumn, stir, 4, 25, 1e-10);
 }
 
-// Two densities settling at voidage 0.8 with friction (contact history across the cuts),
-// 10 relaxation steps and 40 steps.
+// Two densities settling at voidage 0.8 with friction (contact history across the cuts) and
+// the multi-rate half step (its decisions taken alike on every rank), 10 relaxation steps
+// and 40 steps.
 const char* kSuspension = R"(
 name: suspension_on_ranks
 domain: {size: [0.0016, 0.0016, 0.003]}
@@ -186,7 +194,7 @@ contact:
   stiffness: 100
   tangential: {model: linear_history, friction: 0.5}
 drag: {law: di_felice}
-time: {end: 1.0, multirate: false}  # (not on ranks yet: the same scheme on both)
+time: {end: 1.0}
 startup: {relax_steps: 10}
 )";
 
