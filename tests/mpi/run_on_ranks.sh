@@ -15,32 +15,13 @@
 set -euo pipefail
 [ $# -eq 2 ] || { echo "usage: $0 SPHDEM WORK_DIR" >&2; exit 2; }
 bin=$1 work=$2
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 # mpirun as root (CI containers) and more ranks than cores (notes/paraview-catalyst.md §7)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMP_NUM_THREADS=1
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
-cat > case.yaml <<'YAML'
-name: suspension_on_ranks
-description: two densities settling at voidage 0.8 with friction, a small box for the mpi tests
-domain: {size: [0.0016, 0.0016, 0.003]}
-fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4, smoothing_factor: 1.5}
-species:
-  - {name: heavy, diameter: 1.0e-4, density: 2450}
-  - {name: light, diameter: 1.0e-4, density: 1500}
-particles:
-  - {type: random, species: [heavy, light], fractions: [0.5, 0.5], min: [0, 0, 0],
-     max: [0.0016, 0.0016, 0.0024], voidage: 0.8, seed: 1}
-contact:
-  model: linear_spring_dashpot
-  stiffness: 100
-  tangential: {model: linear_history, friction: 0.5}
-drag: {law: di_felice}
-time: {end: 0.004}
-startup: {relax_steps: 10}
-checkpoint: {every: 0.002, keep: 3}
-insitu: {enabled: false}
-YAML
+cp "$here/suspension_on_ranks.yaml" case.yaml  # shared with simulation_mpi_test
 run() { env -u DISPLAY mpirun -np "$@"; }
 
 # 1. refusals

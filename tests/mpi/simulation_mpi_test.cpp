@@ -13,6 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "mpi_gtest_main.hpp"
@@ -176,30 +179,15 @@ TEST(RanksSimulation, StirredColumnAgreesWithOneRank) {
   agree_with_one_rank(kColumn, stir, 4, 25, 1e-10);
 }
 
+
 // Two densities settling at voidage 0.8 with friction (contact history across the cuts) and
 // the multi-rate half step (its decisions taken alike on every rank), 10 relaxation steps
-// and 40 steps.
-const char* kSuspension = R"(
-name: suspension_on_ranks
-domain: {size: [0.0016, 0.0016, 0.003]}
-fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4, smoothing_factor: 1.5}
-species:
-  - {name: heavy, diameter: 1.0e-4, density: 2450}
-  - {name: light, diameter: 1.0e-4, density: 1500}
-particles:
-  - {type: random, species: [heavy, light], fractions: [0.5, 0.5], min: [0, 0, 0],
-     max: [0.0016, 0.0016, 0.0024], voidage: 0.8, seed: 1}
-contact:
-  model: linear_spring_dashpot
-  stiffness: 100
-  tangential: {model: linear_history, friction: 0.5}
-drag: {law: di_felice}
-time: {end: 1.0}
-startup: {relax_steps: 10}
-)";
-
+// and 40 steps: tests/mpi/suspension_on_ranks.yaml, which mpi_run_on_ranks runs too.
 TEST(RanksSimulation, SettlingSuspensionAgreesWithOneRank) {
-  agree_with_one_rank(kSuspension, nullptr, 2, 20, 1e-10);
+  std::ifstream in(SPHDEM_MPI_TEST_DIR "/suspension_on_ranks.yaml");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(text.empty());
+  agree_with_one_rank(text.c_str(), nullptr, 2, 20, 1e-10);
 }
 
 }  // namespace
