@@ -179,7 +179,6 @@ TEST(RanksSimulation, StirredColumnAgreesWithOneRank) {
   agree_with_one_rank(kColumn, stir, 4, 25, 1e-10);
 }
 
-
 // Two densities settling at voidage 0.8 with friction (contact history across the cuts) and
 // the multi-rate half step (its decisions taken alike on every rank), 10 relaxation steps
 // and 40 steps: tests/mpi/suspension_on_ranks.yaml, which mpi_run_on_ranks runs too.
