@@ -141,7 +141,7 @@ void Simulation::resume_share(const CheckpointReader& r) {
 void Simulation::decompose(double cell, bool keep_cells) {
   const SfcGrid grid(params_.box, cell);
   if (grid.cell_count() < static_cast<std::size_t>(comm_.size()))
-    throw std::runtime_error(fmt::format(
+    throw SceneError(fmt::format(  // (every rank throws it: rank 0 prints it)
         "{}: {} ranks, but the box cuts into only {} cells of {:.3g} m (2 h + skin): run on at "
         "most {} ranks, or enlarge the domain",
         scene_.name, comm_.size(), grid.cell_count(), cell, grid.cell_count()));
