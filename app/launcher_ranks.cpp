@@ -35,7 +35,7 @@ LauncherRanks launcher_ranks(const char* (*getenv)(const char*)) {
 std::string one_process_message(const LauncherRanks& r, const std::string& command) {
   return fmt::format(
       "sphdem: error: `sphdem {}` started as {} MPI ranks ({}={}); only `run` and `resume` "
-      "share a scene over ranks. Run `sphdem {}` without mpirun\n",
+      "share a scene over ranks (and rank 0 makes `figures`). Run `sphdem {}` without mpirun\n",
       command, r.size, r.variable, r.size, command);
 }
 

@@ -71,14 +71,6 @@ int print_or_update_docs(const std::string& block, const std::vector<std::string
 int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bool no_insitu,
                       const sphdem::CheckpointReader* resume) {
   const sphdem::RankComm comm;
-  if (comm.parallel() && scene.insitu.enabled && !no_insitu) {
-    if (comm.rank() == 0)
-      std::cerr << fmt::format(
-          "sphdem: error: {} ranks: the in-situ analysis does not run on ranks yet (issue 36); "
-          "add --no-insitu (VTK snapshots, output.vtk_every, do), or run on one rank\n",
-          comm.size());
-    return 2;
-  }
   sphdem::RunOptions opt;
   opt.out_dir = out_dir;
   opt.progress = &std::cerr;
@@ -91,6 +83,7 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
   std::unique_ptr<sphdem::VtkSnapshots> snapshots;
   const sphdem::GridSpec grid = sphdem::column_voidage_grid(
       scene.box.length(0), scene.box.length(1), scene.fill_height(), scene.insitu.grid_spacing);
+  const sphdem::GridSpec piece = sphdem::rank_piece(grid, comm.rank(), comm.size());
   std::vector<double> voidage;
   if (scene.insitu.enabled && !no_insitu && !scene.insitu.pipelines.empty()) {
     sphdem::InSituOptions io;
@@ -103,13 +96,14 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
     sphdem::install_stop_signals();  // ParaView's logger installed its own for SIGINT, SIGTERM
     opt.hooks.push_back(
         {"in-situ analysis", scene.insitu.every, [&](const sphdem::Simulation& sim, long call) {
-           voidage = voidage_on_grid(sim, grid);
+           voidage = voidage_on_grid(sim, grid);  // the whole grid, on every rank
+           if (comm.parallel()) voidage = piece_values(voidage, grid, piece);
            const std::vector<int> contacts = contact_counts(sim.spheres(), sim.contact_list());
            sphdem::InSituFrame fr;
            fr.fluid = &sim.fluid();
            fr.spheres = &sim.spheres();
            fr.contact_count = &contacts;
-           fr.grid = grid;
+           fr.grid = piece;
            fr.whole_extent = grid.extent;
            fr.voidage = &voidage;
            fr.time = sim.time();
@@ -165,7 +159,7 @@ int run_with_analysis(const sphdem::Scene& scene, const std::string& out_dir, bo
     return 1;
   }
   if (summary.stopped_by) return 128 + summary.stopped_by;  // as a process ended by it
-  if (insitu_ran) make_figures(out_dir);
+  if (insitu_ran && comm.rank() == 0) make_figures(out_dir);
   return 0;
 }
 
@@ -260,19 +254,16 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (*docs) return print_or_update_docs(doc_block, doc_files);
   // Under mpirun: run and resume share the scene over the ranks (MPI initialised for them
-  // only); any other command is refused.
+  // only), figures are made by rank 0; check is refused.
   const auto ranks =
       sphdem::launcher_ranks([](const char* v) -> const char* { return std::getenv(v); });
+  const bool speaks = ranks.rank == 0;  // messages common to every rank: rank 0's
+  if (*figures) return speaks ? make_figures(fig_dir) : 0;
   if (ranks.size > 1 && !*run && !*resume) {
-    if (ranks.rank == 0)
-      std::cerr << sphdem::one_process_message(ranks, *check     ? "check"
-                                                      : *figures ? "figures"
-                                                                 : "docs");
+    if (speaks) std::cerr << sphdem::one_process_message(ranks, "check");
     return 2;
   }
   const MpiSession mpi(ranks.size > 1, argc, argv);
-  const bool speaks = ranks.rank == 0;  // messages common to every rank: rank 0's
-  if (*figures) return make_figures(fig_dir);
   if (!fidelity.empty()) overrides.insert(overrides.begin(), "fidelity=" + fidelity);
   sphdem::install_stop_signals();
   try {

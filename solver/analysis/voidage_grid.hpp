@@ -17,6 +17,7 @@
 
 #include "dem/dem_particles.hpp"
 #include "domain/box.hpp"
+#include "domain/rank_comm.hpp"
 #include "sph/fluid_particles.hpp"
 
 namespace sphdem {
@@ -58,11 +59,15 @@ struct VoidageSources {
 FluidParticles with_periodic_images(const FluidParticles& owned, const Box& box, double width);
 DemParticles with_periodic_images(const DemParticles& owned, const Box& box, double width);
 
-// Values in VTK order (x fastest), for the nodes of spec.extent.
-std::vector<double> voidage_at_nodes(const VoidageSources& src, const GridSpec& spec);
+// Values in VTK order (x fastest), for the nodes of spec.extent. On several ranks each
+// rank gives its owned particles and their images, and every rank gets the whole grid:
+// the sums that make h(x), then the spheres' and (3.10)'s, are summed over the ranks.
+std::vector<double> voidage_at_nodes(const VoidageSources& src, const GridSpec& spec,
+                                     const RankComm& comm = RankComm());
 
 // The same from a run's particles at their present positions (with periodic images of
-// the owned particles made afresh, and phi recomputed with the double smoothing).
+// the owned particles made afresh, and phi recomputed with the double smoothing; on
+// ranks phi comes from the spheres' halo copies, as the run's own step reads them).
 std::vector<double> voidage_on_grid(const Simulation& sim, const GridSpec& spec);
 
 // The grains' voidage resolved with one kernel width h at every node and sphere,
@@ -70,5 +75,11 @@ std::vector<double> voidage_on_grid(const Simulation& sim, const GridSpec& spec)
 // analysis/bulk_density.hpp), sharper than the solver's field where the solver's kernel
 // is wider (a sediment's fluid carries larger h, the spheres' kernel may be wider still).
 std::vector<double> grain_voidage_on_grid(const Simulation& sim, const GridSpec& spec, double h);
+
+// A rank's piece of a grid whose values every rank holds: a slab of whole z-layers
+// (empty where the grid has fewer layers than ranks), and its values.
+GridSpec rank_piece(const GridSpec& whole, int rank, int ranks);
+std::vector<double> piece_values(const std::vector<double>& values, const GridSpec& whole,
+                                 const GridSpec& piece);
 
 }  // namespace sphdem

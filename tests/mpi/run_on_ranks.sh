@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # Test mpi_run_on_ranks: `mpirun -np R sphdem run|resume` shares a scene over the ranks.
-#  1. `mpirun -np 2 sphdem check` is refused with one message (rank 0) and status 2;
-#     `run` with the in-situ analysis on is refused likewise, before anything is written,
-#     and a box of fewer cells than ranks.
+#  1. `mpirun -np 2 sphdem check` is refused with one message (rank 0) and status 2, and
+#     so is a box of fewer cells than ranks.
 #  2. A settling suspension on 2 ranks to T; its mid-run checkpoint resumed on 2 ranks:
 #     log.csv byte-identical to the uninterrupted one.
 #  3. The same checkpoint (one parallel-HDF5 file) resumed on 1 and on 3 ranks: in the last
@@ -30,11 +29,6 @@ status=0; run 2 "$bin" check case.yaml >refused.log 2>&1 || status=$?
 cat refused.log
 [ "$status" -eq 2 ] || fail "mpirun -np 2 sphdem check: status $status, not 2"
 [ "$(grep -c 'started as 2 MPI ranks' refused.log)" -eq 1 ] || fail "expected the refusal once"
-status=0; run 2 "$bin" run case.yaml --out insitu --set insitu.enabled=true >insitu.log 2>&1 || status=$?
-cat insitu.log
-[ "$status" -eq 2 ] || fail "in-situ on 2 ranks: status $status, not 2"
-[ "$(grep -c 'add --no-insitu' insitu.log)" -eq 1 ] || fail "expected the in-situ refusal once"
-[ ! -e insitu/log.csv ] || fail "the refused run wrote log.csv"
 
 # more ranks than the box has cells (2 x 2 x 1 cells, 5 ranks): refused once, naming the most
 cat > four_cells.yaml <<'YAML'

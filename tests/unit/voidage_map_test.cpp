@@ -142,3 +142,26 @@ TEST(VoidageMap, FollowsTheParticlesSmoothingLengths) {
     EXPECT_GT(lattice, 10.0 * map);
   }
 }
+
+// On R ranks each rank publishes a slab of whole z-layers of the grid every rank holds:
+// the slabs cover the layers once, in rank order, and their values are the whole grid's
+// (empty slabs where there are fewer layers than ranks).
+TEST(VoidageMap, RankPiecesTileTheGrid) {
+  const GridSpec whole = column_voidage_grid(1e-3, 2e-3, 5e-3, 1e-3);  // 1 x 2 x 5 nodes
+  std::vector<double> values(whole.count());
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = static_cast<double>(k);
+  for (int ranks : {1, 2, 3, 5, 7}) {
+    std::vector<double> joined;
+    int next_layer = 0;
+    for (int r = 0; r < ranks; ++r) {
+      const GridSpec piece = rank_piece(whole, r, ranks);
+      EXPECT_EQ(piece.extent[4], next_layer) << ranks << " ranks, rank " << r;
+      next_layer = piece.extent[5] + 1;
+      const std::vector<double> v = piece_values(values, whole, piece);
+      EXPECT_EQ(v.size(), piece.extent[5] >= piece.extent[4] ? piece.count() : 0u);
+      joined.insert(joined.end(), v.begin(), v.end());
+    }
+    EXPECT_EQ(next_layer, whole.extent[5] + 1);
+    EXPECT_EQ(joined, values) << ranks << " ranks";
+  }
+}
