@@ -1,6 +1,7 @@
 #pragma once
 // The end-of-run observables of a settling column (Zhao, Houlsby & Utili 2014), written
-// by run_scene after the last step of every scene with spheres:
+// by run_scene after the last step of every scene with spheres (on ranks, rank 0 writes
+// them from the grid summed and the spheres and contacts gathered over the ranks):
 //   DIR/bulk_density.csv      rho_bulk(z) (analysis/bulk_density.hpp), on a grid of spacing
 //                             fluid.spacing with the kernel h = sigma dx; only with fluid
 //                             and when every species has the same density (else rho_s is

@@ -18,21 +18,22 @@ double number_percentile(const std::vector<double>& sorted, double p) {
   return sorted[k] + (pos - static_cast<double>(k)) * (sorted[k + 1] - sorted[k]);
 }
 
-SizeThirds size_thirds(const DemParticles& s, double d_lo, double d_hi, int n_bins) {
+SizeThirds size_thirds(const std::vector<double>& z, const std::vector<std::int64_t>& id,
+                       const std::vector<double>& diameter, double d_lo, double d_hi, int n_bins) {
   if (n_bins < 1 || !(d_hi > d_lo))
     throw std::invalid_argument("size_thirds: need n_bins >= 1 and d_hi > d_lo");
   SizeThirds out;
   for (int b = 0; b <= n_bins; ++b) out.bin_edges.push_back(d_lo + (d_hi - d_lo) * b / n_bins);
-  const std::size_t n = s.n_owned;
+  const std::size_t n = z.size();
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return s.z[a] != s.z[b] ? s.z[a] < s.z[b] : s.id[a] < s.id[b];
+    return z[a] != z[b] ? z[a] < z[b] : id[a] < id[b];
   });
   double sum = 0, sum2 = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    sum += 2.0 * s.radius[i];
-    sum2 += 4.0 * s.radius[i] * s.radius[i];
+    sum += diameter[i];
+    sum2 += diameter[i] * diameter[i];
   }
   out.std_d = n > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))) : 0.0;
   std::size_t begin = 0;
@@ -44,14 +45,14 @@ SizeThirds size_thirds(const DemParticles& s, double d_lo, double d_hi, int n_bi
     std::vector<double> d;
     for (std::size_t k = begin; k < begin + size; ++k) {
       const std::size_t i = order[k];
-      const double di = 2.0 * s.radius[i];
+      const double di = diameter[i];
       d.push_back(di);
       const double u = (di - d_lo) / (d_hi - d_lo) * n_bins;
       if (di >= d_lo && di <= d_hi) ++th.bin_count[std::min(static_cast<int>(u), n_bins - 1)];
     }
     if (size > 0) {
-      th.z_min = s.z[order[begin]];
-      th.z_max = s.z[order[begin + size - 1]];
+      th.z_min = z[order[begin]];
+      th.z_max = z[order[begin + size - 1]];
       std::sort(d.begin(), d.end());
       th.mean_d = std::accumulate(d.begin(), d.end(), 0.0) / size;
       th.d10 = number_percentile(d, 0.1);
@@ -61,6 +62,13 @@ SizeThirds size_thirds(const DemParticles& s, double d_lo, double d_hi, int n_bi
     begin += size;
   }
   return out;
+}
+
+SizeThirds size_thirds(const DemParticles& s, double d_lo, double d_hi, int n_bins) {
+  std::vector<double> d(s.n_owned);
+  for (std::size_t i = 0; i < s.n_owned; ++i) d[i] = 2.0 * s.radius[i];
+  return size_thirds({s.z.begin(), s.z.begin() + s.n_owned},
+                     {s.id.begin(), s.id.begin() + s.n_owned}, d, d_lo, d_hi, n_bins);
 }
 
 void write_size_thirds_csv(const SizeThirds& t, const std::string& path) {

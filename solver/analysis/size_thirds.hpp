@@ -8,6 +8,7 @@
 // bin. Coarse grains at the base: mean_d of the bottom third above the top third's.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ double number_percentile(const std::vector<double>& sorted, double p);
 // Owned spheres only; bins: n_bins equal bins over [d_lo, d_hi] (a diameter equal to
 // d_hi goes into the last bin; one outside the range is counted in neither).
 SizeThirds size_thirds(const DemParticles& s, double d_lo, double d_hi, int n_bins);
+// The same from the spheres' heights, ids and diameters (gathered from ranks).
+SizeThirds size_thirds(const std::vector<double>& z, const std::vector<std::int64_t>& id,
+                       const std::vector<double>& diameter, double d_lo, double d_hi, int n_bins);
 
 // CSV: one row per third: third,count,z_min,z_max,mean_d,d10,d50,d90, then one column per
 // bin, named by its edges "n_[lo,hi)" in metres.

@@ -39,6 +39,19 @@ class RankComm {
   // The counts the other ranks will send here, from those this rank sends them.
   std::vector<std::uint64_t> counts(const std::vector<std::uint64_t>& send_count) const;
 
+  // Every rank's `mine` (plain values) joined in rank order on rank 0; empty on the others.
+  template <class T>
+  std::vector<T> gather_to_root(const std::vector<T>& mine) const {
+    std::vector<std::uint64_t> send(size_, 0);
+    send[0] = mine.size();
+    const std::vector<std::uint64_t> recv = counts(send);
+    std::uint64_t n = 0;
+    for (std::uint64_t c : recv) n += c;
+    std::vector<T> all(n);
+    exchange(mine.data(), send, all.data(), recv, sizeof(T));
+    return all;
+  }
+
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0, size_ = 1;

@@ -341,8 +341,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   }
   const bool finished = sim.time() >= end * (1.0 - 1e-12);
   if (finished && (cs.at_end || checkpoint_due)) write_checkpoint();
-  if (finished && !comm.parallel())  // (per sphere: not yet gathered from ranks)
-    write_sediment_output(sim, opt.out_dir);
+  if (finished) write_sediment_output(sim, opt.out_dir);
   r.safeguards = st.safeguards;
   r.steps = sim.step_count();
   r.step_seconds = step_seconds;

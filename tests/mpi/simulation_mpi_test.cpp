@@ -13,11 +13,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "analysis/sediment_output.hpp"
 #include "mpi_gtest_main.hpp"
 #include "propagator/simulation.hpp"
 #include "scene/scene.hpp"
@@ -187,6 +190,74 @@ TEST(RanksSimulation, SettlingSuspensionAgreesWithOneRank) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_FALSE(text.empty());
   agree_with_one_rank(text.c_str(), nullptr, 2, 20, 1e-10);
+}
+
+// The end-of-run sediment output on ranks (rank 0 writes what every rank gathered), after
+// 20 steps of the suspension with the spheres sent off at 30 cm/s: every touching pair and
+// wall contact of the whole set, each once, with its overlap as the
+// gathered positions give it (brute force over all pairs, periodic across x and y).
+TEST(RanksSimulation, ContactNetworkHoldsEveryContactOnce) {
+  const RankComm comm;
+  ASSERT_EQ(comm.size(), g_expected_ranks) << "the launcher started other rank counts";
+  std::ifstream in(SPHDEM_MPI_TEST_DIR "/suspension_on_ranks.yaml");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Simulation sim(load_scene_text(text, "suspension_on_ranks.yaml"), comm);
+  sim.relax();
+  DemParticles& moving = sim.spheres();  // 30 cm/s in directions set by the ids: collisions
+  for (std::size_t j = 0; j < moving.n_owned; ++j) {
+    const double i = static_cast<double>(moving.id[j]);
+    moving.vx[j] = 0.3 * std::sin(1.3 * i);
+    moving.vy[j] = 0.3 * std::cos(0.7 * i);
+    moving.vz[j] = 0.3 * std::sin(2.1 * i);
+  }
+  for (int k = 0; k < 20; ++k) sim.step();
+  const std::string dir = "sediment_on_" + std::to_string(comm.size()) + "_ranks";
+  if (comm.rank() == 0) std::filesystem::create_directories(dir);
+  comm.barrier();
+  write_sediment_output(sim, dir);
+  const DemParticles& s = sim.spheres();
+  const std::size_t n = comm.sum(s.n_owned);
+  std::vector<double> x(n), y(n), z(n), r(n);  // by id, summed over ranks (one term each)
+  for (std::size_t j = 0; j < s.n_owned; ++j) {
+    const auto i = static_cast<std::size_t>(s.id[j]);
+    x[i] = s.x[j], y[i] = s.y[j], z[i] = s.z[j], r[i] = s.radius[j];
+  }
+  for (auto* v : {&x, &y, &z, &r}) comm.sum(*v);
+  if (comm.rank() != 0) return;
+  const Box& box = sim.params().box;
+  std::map<std::pair<long, long>, double> expected;  // (id, id or -1 for the wall) -> overlap
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const double dx = periodic_gap(box, 0, x[i], x[j]), dy = periodic_gap(box, 1, y[i], y[j]),
+                   dz = z[i] - z[j];
+      const double delta = r[i] + r[j] - std::sqrt(dx * dx + dy * dy + dz * dz);
+      if (delta > 0.0) expected[{static_cast<long>(i), static_cast<long>(j)}] = delta;
+    }
+    if (z[i] < r[i]) expected[{static_cast<long>(i), -1L}] = r[i] - z[i];
+  }
+  std::ifstream csv(dir + "/contact_network.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) {
+    long a = 0, b = 0;
+    double c[8];
+    ASSERT_EQ(std::sscanf(line.c_str(), "%ld,%ld,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &a, &b, &c[0],
+                          &c[1], &c[2], &c[3], &c[4], &c[5], &c[6], &c[7]),
+              10)
+        << line;
+    ++rows;
+    const auto it = expected.find({a, b});
+    ASSERT_NE(it, expected.end()) << "listed but not touching (or listed twice): " << line;
+    EXPECT_NEAR(c[6], it->second, 1e-17) << line;  // overlap (m)
+    expected.erase(it);
+  }
+  std::printf("%d ranks: %zu contacts in contact_network.csv, %zu missing\n", comm.size(), rows,
+              expected.size());
+  EXPECT_GT(rows, 0u) << "no contact: the check would not discriminate";
+  EXPECT_TRUE(expected.empty()) << expected.size() << " contacts missing, the first between "
+                                << expected.begin()->first.first << " and "
+                                << expected.begin()->first.second;
 }
 
 }  // namespace
