@@ -1,18 +1,21 @@
 #pragma once
 // Rigid groups (constant-porosity blocks, thesis §4.5): the spheres of a group share its
 // summed force, impulse or pressure-force change equally per unit mass. The sums run over
-// the owned spheres in index order (with ranks: a global reduction in a fixed order).
+// the owned spheres in index order; on ranks each rank's sums are then added in rank
+// order (one all-gather of four numbers a group), so every rank shares the same totals.
 #include <algorithm>
 #include <vector>
 
 #include "dem/dem_particles.hpp"
+#include "domain/rank_comm.hpp"
 
 namespace sphdem {
 
 class RigidGroups {
  public:
-  explicit RigidGroups(const DemParticles& s) {
+  RigidGroups(const DemParticles& s, const RankComm& comm) : comm_(comm) {
     for (std::size_t i = 0; i < s.size(); ++i) n_ = std::max(n_, s.rigid_group[i] + 1);
+    n_ = static_cast<int>(comm_.max(static_cast<double>(n_)));  // a rank may hold no member
     fx_.assign(n_, 0);
     fy_.assign(n_, 0);
     fz_.assign(n_, 0);
@@ -37,6 +40,17 @@ class RigidGroups {
       fz_[gr] += fz;
       m_[gr] += s.mass[j];
     }
+    if (!comm_.parallel()) return;
+    std::vector<double> all(4 * n_);
+    for (int g = 0; g < n_; ++g) {
+      all[4 * g] = fx_[g], all[4 * g + 1] = fy_[g], all[4 * g + 2] = fz_[g];
+      all[4 * g + 3] = m_[g];
+    }
+    comm_.sum(all);
+    for (int g = 0; g < n_; ++g) {
+      fx_[g] = all[4 * g], fy_[g] = all[4 * g + 1], fz_[g] = all[4 * g + 2];
+      m_[g] = all[4 * g + 3];
+    }
   }
   // Adds (add) or sets each member's (x, y, z) to its group's last sum over its mass.
   void share(const DemParticles& s, std::vector<double>& x, std::vector<double>& y,
@@ -57,6 +71,7 @@ class RigidGroups {
   }
 
  private:
+  RankComm comm_;
   int n_ = 0;
   std::vector<double> fx_, fy_, fz_, m_;
 };

@@ -20,14 +20,10 @@ DemSubstepper::DemSubstepper(const Box& box, const DemStepParams& params, DemPar
     : p_(params),
       s_(std::move(spheres)),
       lists_(box, params.skin, params.rotation, comm),
-      groups_(s_),
+      groups_(s_, comm),
       any_spheres_(comm.sum(s_.n_owned) > 0) {}
 
 void DemSubstepper::set_decomposition(const Decomposition* d) {
-  if (groups_.count() > 0)
-    throw std::runtime_error(
-        "rigid groups (spheres.*.rigid) on several ranks: not yet summed over ranks; run this "
-        "scene on one rank (without mpirun)");
   lists_.set_decomposition(d);
 }
 
@@ -233,7 +229,10 @@ void DemSubstepper::forces(bool accumulate_mean, double weight, double dt_spring
 double DemSubstepper::forces_advancing(bool accumulate_mean, double weight, double dt_springs,
                                        const Advance& advance) {
   DemParticles& s = s_;
-  if (s.n_owned == 0) return 0.0;
+  if (s.n_owned == 0) {  // (on ranks the groups' sums still count this rank, with nothing)
+    if (groups_.count() > 0) groups_.sum(s, [](long, double&, double&, double&) {});
+    return 0.0;
+  }
   NextSubstep& next = next_;
   if (advance.correct) {
     for (auto* v : {&next.vx, &next.vy, &next.vz}) v->resize(s.size());
