@@ -10,7 +10,7 @@ Decomposition::Decomposition(const RankComm& comm, const Box& box, double min_ce
   first_cuts_ = part_;
 }
 
-bool Decomposition::balance(double threshold, bool force) {
+bool Decomposition::balance(double threshold, bool force, long steps) {
   comm_.sum(counts_);
   before_ = load_imbalance(rank_weights(grid_, part_, counts_));
   after_ = before_;
@@ -21,6 +21,9 @@ bool Decomposition::balance(double threshold, bool force) {
     record_.worst = std::max(record_.worst, before_);
     record_.fixed_within += fixed <= threshold;
     record_.fixed_worst = std::max(record_.fixed_worst, fixed);
+    record_.steps += steps;
+    record_.steps_within += before_ <= threshold ? steps : 0;
+    record_.fixed_steps_within += fixed <= threshold ? steps : 0;
   }
   bool recut = false;
   if (force || before_ > threshold) {

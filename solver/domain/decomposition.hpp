@@ -30,7 +30,8 @@ class Decomposition {
   }
   // The summed counts' max / mean over the current cuts; recut when above threshold (or
   // always with force). Clears the counts. Returns whether the cuts changed. Collective.
-  bool balance(double threshold = 1.10, bool force = false);
+  // steps: how many steps the cuts in use stood for (the record's weights).
+  bool balance(double threshold = 1.10, bool force = false, long steps = 1);
   // A run continued: the cuts it had (same rank count) and the work it had counted since
   // its last balance, summed over its ranks (given on one rank, zero on the others: the
   // next balance sums them alike).
@@ -42,9 +43,11 @@ class Decomposition {
   double imbalance_after() const { return after_; }
   // Over the balances with work counted: how often the cuts in use were within the
   // threshold (max/mean before a recut), the worst, the recuts; and the same for the
-  // first cuts kept fixed (the control: what a run that never rebalances would have had).
+  // first cuts kept fixed (the control: what a run that never rebalances would have had);
+  // and weighted by the steps each balance stood for.
   struct Record {
     long balances = 0, within = 0, recuts = 0, fixed_within = 0;
+    long steps = 0, steps_within = 0, fixed_steps_within = 0;
     double worst = 1.0, fixed_worst = 1.0;
   };
   const Record& record() const { return record_; }

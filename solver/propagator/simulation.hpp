@@ -153,6 +153,7 @@ class Simulation {
   std::optional<Decomposition> decomposition_;  // on several ranks
   double grid_cell_ = 0;                        // the decomposition's smallest cell
   int rebalance_interval_ = 0;
+  long balanced_at_ = 0;  // the step of the last balance
   bool force_rebalance_ = false;
   bool in_step_ = false;  // between a step's predictor and corrector
   Halo fluid_halo_;

@@ -92,6 +92,7 @@ void Simulation::decompose(double cell, bool keep_cells) {
         scene_.name, comm_.size(), grid.cell_count(), cell, grid.cell_count()));
   decomposition_.emplace(comm_, params_.box, cell);
   grid_cell_ = cell;
+  balanced_at_ = steps_;
   dem_.set_decomposition(&*decomposition_);
   if (!keep_cells) return;
   FluidParticles& f = fluid_;
@@ -114,7 +115,8 @@ void Simulation::decompose(double cell, bool keep_cells) {
 // its cell, with the state the step keeps from its start.
 void Simulation::distribute_fluid() {
   Decomposition& d = *decomposition_;
-  d.balance(kRebalanceThreshold, force_rebalance_);
+  d.balance(kRebalanceThreshold, force_rebalance_, steps_ - balanced_at_);
+  balanced_at_ = steps_;
   force_rebalance_ = false;
   FluidParticles& f = fluid_;
   std::vector<int> dest(f.n_owned);

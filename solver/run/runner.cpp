@@ -396,10 +396,12 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     const Decomposition::Record& b = dec->record();
     *out << fmt::format(
         "sphdem: load balance over {} ranks, {} balances: max/mean within 1.10 before {:.1f} % "
-        "of them (worst {:.3f}), {} recuts; the first cuts kept would have been within 1.10 at "
-        "{:.1f} % (worst {:.3f})\n",
-        comm.size(), b.balances, 100.0 * b.within / b.balances, b.worst, b.recuts,
-        100.0 * b.fixed_within / b.balances, b.fixed_worst);
+        "of them, {:.1f} % of the steps (worst {:.3f}), {} recuts; the first cuts kept would "
+        "have been within 1.10 at {:.1f} % of them, {:.1f} % of the steps (worst {:.3f})\n",
+        comm.size(), b.balances, 100.0 * b.within / b.balances,
+        100.0 * b.steps_within / std::max(b.steps, 1L), b.worst, b.recuts,
+        100.0 * b.fixed_within / b.balances, 100.0 * b.fixed_steps_within / std::max(b.steps, 1L),
+        b.fixed_worst);
   }
   if (r.stopped_by)
     *out << fmt::format(
