@@ -355,6 +355,9 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   r.sphere_particle_steps_per_second = st.dem_sphere_steps / loop;
   r.largest_overlap = st.largest_overlap;
   r.largest_density_error = st.largest_density_error;
+  // the multi-rate tally's spheres, summed over the ranks (its half steps are every rank's)
+  std::vector<double> near{sim.multirate_tally().near_spheres, sim.multirate_tally().owned_spheres};
+  if (comm.parallel()) comm.sum(near);
   if (!out) return r;
   const auto& t = sim.timers().seconds;
   double total = 0;
@@ -390,8 +393,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     *out << fmt::format(
         "sphdem: time.multirate: the spheres out of contact took the fluid's step in {} of {} DEM "
         "half steps ({:.2g} % of the spheres sub-stepped in those); {} tried and sent back\n",
-        m.multirate, m.half_steps, 100.0 * m.near_spheres / std::max(m.owned_spheres, 1.0),
-        m.sent_back);
+        m.multirate, m.half_steps, 100.0 * near[0] / std::max(near[1], 1.0), m.sent_back);
   if (const Decomposition* dec = sim.decomposition(); dec && dec->record().balances > 0) {
     const Decomposition::Record& b = dec->record();
     *out << fmt::format(
