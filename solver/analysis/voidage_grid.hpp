@@ -59,11 +59,12 @@ struct VoidageSources {
 FluidParticles with_periodic_images(const FluidParticles& owned, const Box& box, double width);
 DemParticles with_periodic_images(const DemParticles& owned, const Box& box, double width);
 
-// Values in VTK order (x fastest), for the nodes of spec.extent. On several ranks each
-// rank gives its owned particles and their images, and every rank gets the whole grid:
-// the sums that make h(x), then the spheres' and (3.10)'s, are summed over the ranks.
+// Values in VTK order (x fastest), for the nodes of spec.extent. With a communicator of
+// several ranks (collective: every rank the same spec) each rank gives its owned particles
+// and their images, and every rank gets the whole grid: the sums that make h(x), then the
+// spheres' and (3.10)'s, are summed over the ranks. By default one rank's sources alone.
 std::vector<double> voidage_at_nodes(const VoidageSources& src, const GridSpec& spec,
-                                     const RankComm& comm = RankComm());
+                                     const RankComm& comm = RankComm(MPI_COMM_NULL));
 
 // The same from a run's particles at their present positions (with periodic images of
 // the owned particles made afresh, and phi recomputed with the double smoothing; on
