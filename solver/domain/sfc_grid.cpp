@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -83,11 +84,23 @@ double SfcGrid::distance2_to_cell(std::size_t index, const double p[3]) const {
   const std::array<int, 3> c = cell(index);
   double r2 = 0.0;
   for (int d = 0; d < 3; ++d) {
-    const double lo = box_.lo[d] + c[d] * size_[d], hi = lo + size_[d];
+    double lo = box_.lo[d] + c[d] * size_[d], hi = lo + size_[d];
+    if (!box_.periodic[d]) {  // cell_of clamps points past a wall into the last cells
+      if (c[d] == 0) lo = -std::numeric_limits<double>::infinity();
+      if (c[d] == n_[d] - 1) hi = std::numeric_limits<double>::infinity();
+    }
     const double out = p[d] < lo ? lo - p[d] : p[d] > hi ? p[d] - hi : 0.0;
     r2 += out * out;
   }
   return r2;
+}
+
+double decomposition_cell(const Box& box, double reach, int ranks) {
+  double cell = reach;
+  for (int halved = 0; halved < 2; ++halved)
+    if (SfcGrid(box, cell).cell_count() < kCellsPerRank * static_cast<std::size_t>(ranks))
+      cell /= 2;
+  return cell;
 }
 
 }  // namespace sphdem

@@ -15,6 +15,13 @@ namespace sphdem {
 // Hilbert curve": the axes to the transposed form, then its bits interleaved); bits <= 21.
 std::uint64_t hilbert_key(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits);
 
+// The cell a decomposition over `ranks` cuts the box into, from the reach of the widest
+// pair: the reach, halved (at most twice) while the box holds fewer than kCellsPerRank
+// cells a rank, so that the cuts can follow the work of a bed that fills a few layers of
+// cells (the halo then looks two or four cells out; bench/RESULTS.md, session 32).
+inline constexpr std::size_t kCellsPerRank = 64;
+double decomposition_cell(const Box& box, double reach, int ranks);
+
 class SfcGrid {
  public:
   // Cells of at least min_cell along every axis (one cell where an axis is shorter), a
@@ -32,7 +39,9 @@ class SfcGrid {
     return (std::size_t(c[2]) * n_[1] + c[1]) * n_[0] + c[0];
   }
   std::array<int, 3> cell(std::size_t index) const;
-  // The squared distance from the point p to the box of the cell with this index.
+  // The squared distance from the point p to the points that fall in the cell with this
+  // index: its box, open past the grid's faces on non-periodic axes (cell_of clamps the
+  // points there, as wall particles, into the outer cells).
   double distance2_to_cell(std::size_t index, const double p[3]) const;
   std::uint64_t key(const std::array<int, 3>& c) const {
     return hilbert_key(std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2]), bits_);

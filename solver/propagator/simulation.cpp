@@ -12,6 +12,7 @@
 #include "coupling/reaction.hpp"
 #include "coupling/voidage.hpp"
 #include "domain/reorder.hpp"
+#include "domain/sfc_grid.hpp"
 #include "io/particle_state.hpp"
 #include "scene/initial_state.hpp"
 #include "sph/density_rate.hpp"
@@ -133,7 +134,10 @@ void Simulation::build_initial_state() {
     fluid_.eps[a] = 1.0;
   }
   if (comm_.parallel())
-    decompose(fluid_cutoff() * (1.0 + kFluidSkin / kernel::kSupport), /*keep_cells=*/true);
+    decompose(
+        decomposition_cell(params_.box, fluid_cutoff() * (1.0 + kFluidSkin / kernel::kSupport),
+                           comm_.size()),
+        /*keep_cells=*/true);
   // m/rho = dx^3 for the double smoothing (3.10)
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
     fluid_.rho[a] = p.eos.rho0;

@@ -87,7 +87,8 @@ void Simulation::decompose(double cell, bool keep_cells) {
   const SfcGrid grid(params_.box, cell);
   if (grid.cell_count() < static_cast<std::size_t>(comm_.size()))
     throw SceneError(fmt::format(  // (every rank throws it: rank 0 prints it)
-        "{}: {} ranks, but the box cuts into only {} cells of {:.3g} m (2 h + skin): run on at "
+        "{}: {} ranks, but the box cuts into only {} cells of {:.3g} m (the reach of a pair, "
+        "halved at most twice): run on at "
         "most {} ranks, or enlarge the domain",
         scene_.name, comm_.size(), grid.cell_count(), cell, grid.cell_count()));
   decomposition_.emplace(comm_, params_.box, cell);

@@ -28,7 +28,7 @@ RankForecast forecast_ranks(const Simulation& sim, int ranks) {
   for (std::size_t a = 0; a < f.n_owned; ++a) hmax = std::max(hmax, f.h[a]);
   const double reach = kernel::kSupport * hmax + sim.fluid_skin();  // the fluid lists' cell
   const Box& box = sim.params().box;
-  const SfcGrid grid(box, reach);
+  const SfcGrid grid(box, decomposition_cell(box, reach, ranks));
   Cells cells{std::vector<std::vector<std::array<double, 3>>>(grid.cell_count()),
               std::vector<std::uint64_t>(grid.cell_count(), 0)};
   auto add = [&](double x, double y, double z, std::uint64_t work) {

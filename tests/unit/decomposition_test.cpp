@@ -106,6 +106,44 @@ TEST(SfcPartition, MoreRanksThanCellsIsRefused) {
   EXPECT_THROW(partition_curve(grid, w, 0), std::invalid_argument);
 }
 
+// The halo keeps a copy where it lies within the reach of a cell the receiver owns, so the
+// distance to a cell must bound the distance to every point the cell holds: past the walls
+// too, where cell_of clamps wall particles into the outer cells (a wall particle 0.5 mm
+// below the box and another 0.1 mm below it in the next cell are nearer than the first is
+// to that cell's box).
+TEST(SfcGrid, DistanceToACellBoundsEveryPointItHolds) {
+  const Box box{{0, 0, 0}, {0.2, 0.2, 1.0}, {true, true, false}};
+  const SfcGrid grid(box, 0.05);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto point = [&] {  // in x and y inside the box (wrapped), in z up to 0.1 past the walls
+    return std::array<double, 3>{0.2 * u(rng), 0.2 * u(rng), -0.1 + 1.2 * u(rng)};
+  };
+  int past_walls = 0;
+  for (int k = 0; k < 200000; ++k) {
+    const std::array<double, 3> p = point(), q = point();
+    const double r2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                      (p[2] - q[2]) * (p[2] - q[2]);
+    const std::size_t c = grid.index(grid.cell_of(q[0], q[1], q[2]));
+    ASSERT_LE(grid.distance2_to_cell(c, p.data()), r2 * (1 + 1e-12))
+        << "p (" << p[0] << ", " << p[1] << ", " << p[2] << "), q (" << q[0] << ", " << q[1] << ", "
+        << q[2] << ")";
+    past_walls += (q[2] < 0 || q[2] > 1.0) && (p[2] < 0 || p[2] > 1.0);
+  }
+  EXPECT_GT(past_walls, 1000);
+}
+
+TEST(SfcGrid, DecompositionCellHalvesTheReachWhereTheBoxHoldsFewCellsARank) {
+  const Box column{{0, 0, 0}, {0.2, 0.2, 1.0}, {true, true, false}};
+  // 4 x 4 x 16 = 256 cells of the reach: enough for 4 ranks, too few for 5
+  EXPECT_EQ(decomposition_cell(column, 0.05, 4), 0.05);
+  EXPECT_EQ(decomposition_cell(column, 0.05, 5), 0.025);
+  EXPECT_EQ(SfcGrid(column, decomposition_cell(column, 0.05, 5)).cell_count(), 8u * 8u * 32u);
+  // 1 x 1 x 4 cells of 0.2, then 2 x 2 x 8 of 0.1: halved twice, no more
+  EXPECT_EQ(decomposition_cell(column, 0.2, 4), 0.05);
+  EXPECT_EQ(decomposition_cell(column, 0.2, 1), 0.05);
+}
+
 // Every pair of particles within the reach whose owners differ, or that meet through a
 // periodic face, is in the halo: the rank of one receives the other's cell at the image
 // the pair needs. Brute force over every pair and every periodic image.

@@ -41,7 +41,7 @@ TEST(RankForecast, OneRankHasTheRunsPeriodicImages) {
     f.y[a] = box.wrap(1, f.y[a]);
   }
   const RankComm comm(MPI_COMM_NULL);
-  const SfcGrid grid(box, reach);
+  const SfcGrid grid(box, decomposition_cell(box, reach, 1));
   const SfcPartition part =
       partition_curve(grid, std::vector<std::uint64_t>(grid.cell_count(), 1), 1);
   RankHalo halo;
