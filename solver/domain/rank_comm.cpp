@@ -1,5 +1,6 @@
 #include "domain/rank_comm.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -28,6 +29,7 @@ RankComm::RankComm(MPI_Comm comm) : comm_(comm) {
 void RankComm::sum(std::vector<std::uint64_t>& values) const {
   if (!parallel() || values.empty()) return;
   static_assert(sizeof(unsigned long) == sizeof(std::uint64_t));
+  ++traffic_->collectives;
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_UNSIGNED_LONG,
                 MPI_SUM, comm_);
 }
@@ -39,17 +41,22 @@ std::uint64_t RankComm::sum(std::uint64_t value) const {
 }
 
 double RankComm::max(double value) const {
-  if (parallel()) MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  if (!parallel()) return value;
+  ++traffic_->collectives;
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, comm_);
   return value;
 }
 
 double RankComm::min(double value) const {
-  if (parallel()) MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, comm_);
+  if (!parallel()) return value;
+  ++traffic_->collectives;
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, comm_);
   return value;
 }
 
 void RankComm::max(std::vector<double>& values) const {
   if (!parallel() || values.empty()) return;
+  ++traffic_->collectives;
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
                 comm_);
 }
@@ -57,6 +64,7 @@ void RankComm::max(std::vector<double>& values) const {
 void RankComm::sum(std::vector<double>& values) const {
   if (!parallel() || values.empty()) return;
   // gathered and added in rank order on every rank: the same bits on each, run after run
+  ++traffic_->collectives;
   std::vector<double> all(values.size() * size_);
   MPI_Allgather(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, all.data(),
                 static_cast<int>(values.size()), MPI_DOUBLE, comm_);
@@ -69,6 +77,7 @@ void RankComm::sum(std::vector<double>& values) const {
 
 std::string RankComm::broadcast(const std::string& text, int root) const {
   if (!parallel()) return text;
+  ++traffic_->collectives;
   std::uint64_t n = text.size();
   MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG, root, comm_);
   std::string out = text;
@@ -78,11 +87,14 @@ std::string RankComm::broadcast(const std::string& text, int root) const {
 }
 
 void RankComm::barrier() const {
-  if (parallel()) MPI_Barrier(comm_);
+  if (!parallel()) return;
+  ++traffic_->collectives;
+  MPI_Barrier(comm_);
 }
 
 std::vector<std::uint64_t> RankComm::counts(const std::vector<std::uint64_t>& send_count) const {
   if (!parallel()) return send_count;
+  ++traffic_->collectives;
   std::vector<std::uint64_t> recv(size_);
   MPI_Alltoall(send_count.data(), 1, MPI_UNSIGNED_LONG, recv.data(), 1, MPI_UNSIGNED_LONG, comm_);
   return recv;
@@ -94,20 +106,39 @@ void RankComm::exchange(const void* send, const std::vector<std::uint64_t>& send
     if (send_count[0] > 0) std::memmove(recv, send, send_count[0] * bytes);
     return;
   }
-  std::vector<int> sc(size_), sd(size_), rc(size_), rd(size_);
-  std::uint64_t s = 0, r = 0;
+  // Point to point with the ranks that send or receive anything (a halo's few neighbours,
+  // not every rank as MPI_Alltoallv's pairwise schedule): each message lands at its fixed
+  // offset, and messages between two ranks keep their order (MPI's non-overtaking rule), so
+  // successive exchanges never mix.
+  constexpr int kTag = 36;
+  const char* from = static_cast<const char*>(send);
+  char* to = static_cast<char*>(recv);
+  std::vector<std::uint64_t> sd(size_ + 1, 0), rd(size_ + 1, 0);  // byte offsets by rank
   for (int q = 0; q < size_; ++q) {
-    const std::uint64_t sb = send_count[q] * bytes, rb = recv_count[q] * bytes;
-    if (s + sb > std::numeric_limits<int>::max() || r + rb > std::numeric_limits<int>::max())
-      throw std::overflow_error("RankComm::exchange: more than 2 GiB in one exchange");
-    sc[q] = static_cast<int>(sb);
-    sd[q] = static_cast<int>(s);
-    rc[q] = static_cast<int>(rb);
-    rd[q] = static_cast<int>(r);
-    s += sb;
-    r += rb;
+    sd[q + 1] = sd[q] + send_count[q] * bytes;
+    rd[q + 1] = rd[q] + recv_count[q] * bytes;
+    if (std::max(sd[q + 1] - sd[q], rd[q + 1] - rd[q]) >
+        static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+      throw std::overflow_error("RankComm::exchange: more than 2 GiB in one message");
   }
-  MPI_Alltoallv(send, sc.data(), sd.data(), MPI_BYTE, recv, rc.data(), rd.data(), MPI_BYTE, comm_);
+  std::vector<MPI_Request> requests;
+  for (int q = 0; q < size_; ++q)
+    if (q != rank_ && rd[q + 1] > rd[q]) {
+      requests.emplace_back();
+      MPI_Irecv(to + rd[q], static_cast<int>(rd[q + 1] - rd[q]), MPI_BYTE, q, kTag, comm_,
+                &requests.back());
+    }
+  for (int q = 0; q < size_; ++q)
+    if (q != rank_ && sd[q + 1] > sd[q]) {
+      requests.emplace_back();
+      MPI_Isend(from + sd[q], static_cast<int>(sd[q + 1] - sd[q]), MPI_BYTE, q, kTag, comm_,
+                &requests.back());
+      traffic_->bytes_sent += sd[q + 1] - sd[q];
+    }
+  if (sd[rank_ + 1] > sd[rank_])  // this rank's own copies (periodic images)
+    std::memmove(to + rd[rank_], from + sd[rank_], sd[rank_ + 1] - sd[rank_]);
+  ++traffic_->exchanges;
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }
 
 }  // namespace sphdem

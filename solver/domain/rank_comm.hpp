@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,14 @@ namespace sphdem {
 
 class RankComm {
  public:
+  // What this rank's collectives moved since the communicator was made (its copies count
+  // into the same tally): the personalised exchanges and the bytes this rank sent in them
+  // to other ranks, and the other collectives (reductions, count exchanges, broadcasts,
+  // barriers).
+  struct Traffic {
+    std::uint64_t exchanges = 0, bytes_sent = 0, collectives = 0;
+  };
+
   RankComm();  // MPI_COMM_WORLD if MPI is initialised, else one rank
   explicit RankComm(MPI_Comm comm);
 
@@ -33,11 +42,14 @@ class RankComm {
 
   // Every rank sends send_count[q] items of `bytes` bytes each to rank q from `send`
   // (grouped by destination, in rank order) and receives into `recv` (grouped by source,
-  // in rank order). recv_count: what each rank sends here (from counts()).
+  // in rank order). recv_count: what each rank sends here (from counts()). Collective, but
+  // messages pass only between ranks with something to send (point to point).
   void exchange(const void* send, const std::vector<std::uint64_t>& send_count, void* recv,
                 const std::vector<std::uint64_t>& recv_count, std::size_t bytes) const;
   // The counts the other ranks will send here, from those this rank sends them.
   std::vector<std::uint64_t> counts(const std::vector<std::uint64_t>& send_count) const;
+
+  const Traffic& traffic() const { return *traffic_; }
 
   // Every rank's `mine` (plain values) joined in rank order on rank 0; empty on the others.
   template <class T>
@@ -55,6 +67,7 @@ class RankComm {
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0, size_ = 1;
+  std::shared_ptr<Traffic> traffic_ = std::make_shared<Traffic>();
 };
 
 }  // namespace sphdem

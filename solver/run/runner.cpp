@@ -19,6 +19,7 @@
 #include "propagator/simulation.hpp"
 #include "run/checkpoints.hpp"
 #include "run/rank_forecast.hpp"
+#include "run/rank_report.hpp"
 #include "run/run_log.hpp"
 #include "run/safeguard_tally.hpp"
 #include "run/sediment_forecast.hpp"
@@ -286,6 +287,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   const auto t_loop = Clock::now();
   auto t_progress = t_loop, t_checkpoint = t_loop;
   const long first_step = sim.step_count();
+  const RankComm::Traffic traffic_at_loop = comm.traffic();
   const double end = scene.time.end;
   bool checkpoint_due = false;
   while (sim.time() < end * (1.0 - 1e-12)) {
@@ -358,6 +360,8 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   // the multi-rate tally's spheres, summed over the ranks (its half steps are every rank's)
   std::vector<double> near{sim.multirate_tally().near_spheres, sim.multirate_tally().owned_spheres};
   if (comm.parallel()) comm.sum(near);
+  const std::string ranks_text =
+      rank_report(sim, comm, traffic_at_loop, sim.step_count() - first_step);
   if (!out) return r;
   const auto& t = sim.timers().seconds;
   double total = 0;
@@ -394,17 +398,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
         "sphdem: time.multirate: the spheres out of contact took the fluid's step in {} of {} DEM "
         "half steps ({:.2g} % of the spheres sub-stepped in those); {} tried and sent back\n",
         m.multirate, m.half_steps, 100.0 * near[0] / std::max(near[1], 1.0), m.sent_back);
-  if (const Decomposition* dec = sim.decomposition(); dec && dec->record().balances > 0) {
-    const Decomposition::Record& b = dec->record();
-    *out << fmt::format(
-        "sphdem: load balance over {} ranks, {} balances: max/mean within 1.10 before {:.1f} % "
-        "of them, {:.1f} % of the steps (worst {:.3f}), {} recuts; the first cuts kept would "
-        "have been within 1.10 at {:.1f} % of them, {:.1f} % of the steps (worst {:.3f})\n",
-        comm.size(), b.balances, 100.0 * b.within / b.balances,
-        100.0 * b.steps_within / std::max(b.steps, 1L), b.worst, b.recuts,
-        100.0 * b.fixed_within / b.balances, 100.0 * b.fixed_steps_within / std::max(b.steps, 1L),
-        b.fixed_worst);
-  }
+  *out << ranks_text;
   if (r.stopped_by)
     *out << fmt::format(
         "sphdem: stopped at t = {:.6g} s (step {}); checkpoint {}. Continue with: sphdem resume "

@@ -270,6 +270,36 @@ TEST(RanksHalo, BalanceFollowsASettlingLoad) {
   }
 }
 
+// The exchange point to point: each rank sends me + 1 values to the next rank and 2 to
+// itself, nothing to the others; every value lands in its place, and the tally counts
+// one exchange, the bytes that left the rank (not its own copies) and the count exchange.
+TEST(RanksComm, ExchangeDeliversInPlaceAndTalliesWhatLeft) {
+  const RankComm comm;
+  ASSERT_EQ(comm.size(), g_expected_ranks);
+  const int R = comm.size(), me = comm.rank(), next = (me + 1) % R;
+  std::vector<std::uint64_t> send_count(R, 0);
+  send_count[me] += 2;
+  send_count[next] += static_cast<std::uint64_t>(me + 1);
+  std::vector<std::int64_t> send;  // grouped by destination rank
+  for (int q = 0; q < R; ++q)
+    for (std::uint64_t k = 0; k < send_count[q]; ++k) send.push_back(1000 * me + 10 * q + k);
+  const RankComm::Traffic before = comm.traffic();
+  const std::vector<std::uint64_t> recv_count = comm.counts(send_count);
+  std::uint64_t n = 0;
+  for (const std::uint64_t c : recv_count) n += c;
+  std::vector<std::int64_t> recv(n, -1);
+  comm.exchange(send.data(), send_count, recv.data(), recv_count, sizeof(std::int64_t));
+  std::size_t at = 0;
+  for (int q = 0; q < R; ++q)
+    for (std::uint64_t k = 0; k < recv_count[q]; ++k, ++at)
+      EXPECT_EQ(recv[at], static_cast<std::int64_t>(1000 * q + 10 * me + k)) << "from " << q;
+  const RankComm::Traffic& after = comm.traffic();
+  const std::uint64_t left = R > 1 ? (me + 1) * sizeof(std::int64_t) : 0;
+  EXPECT_EQ(after.exchanges - before.exchanges, R > 1 ? 1u : 0u);
+  EXPECT_EQ(after.bytes_sent - before.bytes_sent, left);
+  EXPECT_EQ(after.collectives - before.collectives, R > 1 ? 1u : 0u);  // counts()
+}
+
 }  // namespace
 }  // namespace sphdem
 
