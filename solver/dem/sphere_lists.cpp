@@ -48,6 +48,13 @@ void SphereLists::rebuild(DemParticles& s) {
     cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), contact_cut);
     contacts_.build(s, cells_, skin);
   }
+  if (halo_.ranks()) {  // the copies the contact rows read, refreshed alone each sub-step
+    std::vector<std::uint8_t> wanted(halo_.n_ghost(), 0);
+    if (rmax > 0.0)
+      for (const std::uint32_t j : contacts_.neighbour)
+        if (j >= s.n_owned) wanted[j - s.n_owned] = 1;
+    halo_.select(wanted);
+  }
   if (history_on_) history_.load(s, contacts_);
   drift_ = 0.0;
   ++builds_;

@@ -66,9 +66,10 @@ class SphereLists {
   // The halo copies' positions and changing fields as the passes read them.
   void refresh_halo(DemParticles& s) const;
   // Before a contact pass: on ranks the contact rows read the copies themselves (one rank
-  // reads their owned source and needs nothing), so their motion is refreshed. Collective.
+  // reads their owned source and needs nothing), so the motion of the copies in the
+  // contact list is refreshed (the others wait for refresh_halo). Collective.
   void refresh_for_contacts(DemParticles& s) const {
-    if (halo_.ranks()) refresh_halo(s);
+    if (halo_.ranks()) refresh_selected_copies(halo_, s);
   }
 
   // Checkpoints: the contact history by id pairs and the fluid's reach.

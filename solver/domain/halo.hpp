@@ -7,6 +7,8 @@
 // PeriodicHalo so that its bits stay those of a run without MPI.
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -65,6 +67,18 @@ class Halo {
     periodic_.fill_positions(x, y, z);
     for (double* f : fields) periodic_.fill(f);
   }
+  // Ranks: the copies a pass between builds reads (wanted[g] != 0 for copy g), and their
+  // positions and `fields` refreshed alone (RankHalo::select, fill_selected). Collective.
+  void select(const std::vector<std::uint8_t>& wanted) { rank_.select(comm_, wanted); }
+  std::size_t n_selected() const { return ranks() ? rank_.n_selected() : 0; }
+  // Ranks: the copies (and selected copies) of other ranks' particles, not own images.
+  std::size_t n_ghost_from_others() const { return ranks() ? rank_.n_ghost_from_others() : 0; }
+  std::size_t n_selected_from_others() const {
+    return ranks() ? rank_.n_selected_from_others() : 0;
+  }
+  void fill_selected(double* x, double* y, double* z, const std::vector<double*>& fields) const {
+    rank_.fill_selected(comm_, x, y, z, fields);
+  }
   // The copies' rows of `stride` values added to their owners' (the reverse of fill).
   void add_to_sources(double* rows, std::size_t stride) const {
     if (ranks())
@@ -91,19 +105,32 @@ class Halo {
   std::vector<double> no_shift_;
 };
 
-// Between builds: the copies' positions and the fields the registry marks refreshed (the
-// carried state that changes), on ranks in one exchange.
+// The fields the registry marks refreshed (the carried state that changes between builds;
+// all doubles, which one exchange packs in rows).
 template <class Particles>
-void refresh_copies(const Halo& halo, Particles& p) {
+std::vector<double*> refreshed_fields(Particles& p) {
   std::vector<double*> fields;
   p.for_each_field([&](const FieldInfo& field, auto& v) {
     if (!field.refreshed()) return;
     if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::vector<double>>)
       fields.push_back(v.data());
     else
-      halo.fill(v);  // (none today: every changing field is a double)
+      throw std::logic_error(std::string("refreshed halo field '") + field.name +
+                             "' is not a double");
   });
-  halo.fill_positions_and(p.x.data(), p.y.data(), p.z.data(), fields);
+  return fields;
+}
+
+// Between builds: the copies' positions and refreshed fields, on ranks in one exchange.
+template <class Particles>
+void refresh_copies(const Halo& halo, Particles& p) {
+  halo.fill_positions_and(p.x.data(), p.y.data(), p.z.data(), refreshed_fields(p));
+}
+
+// Ranks: the same for the selected copies only (Halo::select).
+template <class Particles>
+void refresh_selected_copies(const Halo& halo, Particles& p) {
+  halo.fill_selected(p.x.data(), p.y.data(), p.z.data(), refreshed_fields(p));
 }
 
 }  // namespace sphdem

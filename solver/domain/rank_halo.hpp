@@ -47,6 +47,9 @@ class RankHalo {
   std::size_t n_owned() const { return n_owned_; }
   std::size_t n_ghost() const { return n_ghost_; }
   std::size_t n_sent() const { return send_index_.size(); }
+  // Copies of other ranks' particles (the rest are this rank's own periodic images).
+  std::size_t n_ghost_from_others() const { return n_ghost_ - own_copies_; }
+  std::size_t n_selected_from_others() const { return selected_ghost_.size() - own_selected_; }
 
   // Copies a field from the owners into [n_owned, n_owned + n_ghost) (sized by the caller).
   template <class T>
@@ -65,15 +68,29 @@ class RankHalo {
   // in a fixed order (by source rank, then copy order).
   void add_to_sources(const RankComm& comm, double* rows, std::size_t stride) const;
 
+  // The copies a pass reads (wanted[g] != 0 for copy g, as a contact list's partners): their
+  // owners learn which, so that fill_selected refreshes only those. Collective; remade
+  // after each build.
+  void select(const RankComm& comm, const std::vector<std::uint8_t>& wanted);
+  std::size_t n_selected() const { return selected_ghost_.size(); }
+  bool selected() const { return selected_; }
+  // fill_positions_and for the selected copies only (the others keep their values).
+  void fill_selected(const RankComm& comm, double* x, double* y, double* z,
+                     const std::vector<double*>& fields) const;
+
  private:
-  std::size_t n_owned_ = 0, n_ghost_ = 0;
+  std::size_t n_owned_ = 0, n_ghost_ = 0, own_copies_ = 0, own_selected_ = 0;
   // the cells sent, for the cuts and reach they were made for (remade when either changes)
   std::vector<HaloSend> sends_;
   std::vector<std::uint32_t> sends_first_;
   std::array<int, 3> sends_reach_{};
   std::vector<std::uint32_t> send_index_;  // owned particles sent, grouped by rank
   std::vector<std::uint64_t> send_count_, recv_count_;
-  std::vector<double> shift_;           // three per copy: the image in metres
+  std::vector<double> shift_;  // three per copy: the image in metres
+  // select(): the owned particles whose copies are wanted, grouped by rank, and the copies
+  std::vector<std::uint32_t> selected_send_, selected_ghost_;
+  std::vector<std::uint64_t> selected_send_count_, selected_recv_count_;
+  bool selected_ = false;               // select() since the last build
   mutable std::vector<double> buffer_;  // the values sent (doubles: aligned for any field)
 };
 

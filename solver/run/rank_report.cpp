@@ -10,14 +10,16 @@
 namespace sphdem {
 
 std::string rank_report(const Simulation& sim, const RankComm& comm,
-                        const RankComm::Traffic& at_start, long steps) {
+                        const RankComm::Traffic& at_start, long steps, double substeps) {
   if (!comm.parallel()) return "";
   const RankComm::Traffic& now = comm.traffic();
   const DemParticles& s = sim.spheres();
   // summed over the ranks: bytes sent in the loop, owned and copied particles of each phase
-  std::vector<std::uint64_t> sums{now.bytes_sent - at_start.bytes_sent, sim.fluid().n_owned,
-                                  sim.fluid_halo().n_ghost(), s.n_owned,
-                                  sim.dem().halo().n_ghost()};
+  const Halo &fluid_halo = sim.fluid_halo(), &sphere_halo = sim.dem().halo();
+  std::vector<std::uint64_t> sums{
+      now.bytes_sent - at_start.bytes_sent, sim.fluid().n_owned,
+      fluid_halo.n_ghost_from_others(),     s.n_owned,
+      sphere_halo.n_ghost_from_others(),    sphere_halo.n_selected_from_others()};
   const double exchanges = static_cast<double>(now.exchanges - at_start.exchanges);
   const double collectives = static_cast<double>(now.collectives - at_start.collectives);
   comm.sum(sums);
@@ -37,14 +39,15 @@ std::string rank_report(const Simulation& sim, const RankComm& comm,
   const double per_step = 1.0 / std::max(steps, 1L);
   const double owned = static_cast<double>(sums[1] + sums[3]);
   out += fmt::format(
-      "sphdem: between the ranks per step: {:.1f} exchanges and {:.1f} other collectives a rank, "
-      "{:.0f} bytes sent to other ranks per owned particle; halo copies per owned particle at the "
-      "end: fluid "
-      "{:.3f}, spheres {:.3f}\n",
-      exchanges * per_step, collectives * per_step,
+      "sphdem: between the ranks per step ({:.1f} DEM sub-steps): {:.1f} exchanges and {:.1f} "
+      "other collectives a rank, {:.0f} bytes sent to other ranks per owned particle; copies "
+      "of other ranks' particles per owned particle at the end: fluid {:.3f}, spheres {:.3f} "
+      "({:.3f} in the contact lists, refreshed each sub-step)\n",
+      substeps, exchanges * per_step, collectives * per_step,
       static_cast<double>(sums[0]) * per_step / std::max(owned, 1.0),
       static_cast<double>(sums[2]) / std::max<double>(static_cast<double>(sums[1]), 1.0),
-      static_cast<double>(sums[4]) / std::max<double>(static_cast<double>(sums[3]), 1.0));
+      static_cast<double>(sums[4]) / std::max<double>(static_cast<double>(sums[3]), 1.0),
+      static_cast<double>(sums[5]) / std::max<double>(static_cast<double>(sums[3]), 1.0));
   return out;
 }
 

@@ -11,8 +11,9 @@ namespace sphdem {
 class Simulation;
 
 // Collective; the text on rank 0, empty on the others and on one rank. at_start: the
-// communicator's tally when the loop began; steps: the loop's steps.
+// communicator's tally when the loop began; steps: the loop's steps; substeps: the DEM
+// sub-steps a step took on average (each refreshes the sphere copies).
 std::string rank_report(const Simulation& sim, const RankComm& comm,
-                        const RankComm::Traffic& at_start, long steps);
+                        const RankComm::Traffic& at_start, long steps, double substeps);
 
 }  // namespace sphdem

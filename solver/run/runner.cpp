@@ -288,6 +288,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   auto t_progress = t_loop, t_checkpoint = t_loop;
   const long first_step = sim.step_count();
   const RankComm::Traffic traffic_at_loop = comm.traffic();
+  const double sphere_steps_at_loop = st.dem_sphere_steps;
   const double end = scene.time.end;
   bool checkpoint_due = false;
   while (sim.time() < end * (1.0 - 1e-12)) {
@@ -360,8 +361,12 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   // the multi-rate tally's spheres, summed over the ranks (its half steps are every rank's)
   std::vector<double> near{sim.multirate_tally().near_spheres, sim.multirate_tally().owned_spheres};
   if (comm.parallel()) comm.sum(near);
-  const std::string ranks_text =
-      rank_report(sim, comm, traffic_at_loop, sim.step_count() - first_step);
+  const long loop_steps = sim.step_count() - first_step;
+  const double substeps = sphere_total > 0 && loop_steps > 0
+                              ? (st.dem_sphere_steps - sphere_steps_at_loop) /
+                                    static_cast<double>(sphere_total) / loop_steps
+                              : 0.0;
+  const std::string ranks_text = rank_report(sim, comm, traffic_at_loop, loop_steps, substeps);
   if (!out) return r;
   const auto& t = sim.timers().seconds;
   double total = 0;

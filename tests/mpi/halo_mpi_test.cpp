@@ -155,6 +155,31 @@ void run_case(const Scenario& s, unsigned seed) {
   comm.sum(returned);
   EXPECT_EQ(returned, copies);
   EXPECT_GT(comm.sum(halo.n_ghost()), 0u);
+  // a refresh of the selected copies (those of even id): the owners move by 1 m and load
+  // +100; the selected copies follow (with their image's shift: to round-off), the others
+  // keep their values
+  std::vector<std::uint8_t> wanted(halo.n_ghost());
+  for (std::size_t g = 0; g < wanted.size(); ++g) wanted[g] = p.id[p.n_owned + g] % 2 == 0;
+  halo.select(comm, wanted);
+  const Points before = p;
+  for (std::size_t i = 0; i < p.n_owned; ++i) {
+    p.x[i] += 1.0;
+    p.load[i] += 100.0;
+  }
+  halo.fill_selected(comm, p.x.data(), p.y.data(), p.z.data(), {p.load.data()});
+  std::size_t refreshed = 0;
+  for (std::size_t g = 0; g < wanted.size(); ++g) {
+    const std::size_t j = p.n_owned + g;
+    EXPECT_DOUBLE_EQ(p.x[j], wanted[g] ? before.x[j] + 1.0 : before.x[j]) << "copy " << g;
+    EXPECT_EQ(p.y[j], before.y[j]);
+    EXPECT_EQ(p.load[j], wanted[g] ? before.load[j] + 100.0 : before.load[j]) << "copy " << g;
+    refreshed += wanted[g];
+  }
+  EXPECT_EQ(halo.n_selected(), refreshed);
+  if (R > 1) {
+    EXPECT_GT(comm.sum(refreshed), 0u);
+    EXPECT_LT(comm.sum(refreshed), comm.sum(halo.n_ghost()));
+  }
 }
 
 TEST(RanksHalo, ColumnPeriodicInXY) {
