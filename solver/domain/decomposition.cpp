@@ -24,6 +24,8 @@ bool Decomposition::balance(double threshold, bool force, long steps) {
     record_.steps += steps;
     record_.steps_within += before_ <= threshold ? steps : 0;
     record_.fixed_steps_within += fixed <= threshold ? steps : 0;
+    record_.weighted += before_ * static_cast<double>(steps);
+    record_.fixed_weighted += fixed * static_cast<double>(steps);
   }
   bool recut = false;
   if (force || before_ > threshold) {

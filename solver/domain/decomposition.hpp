@@ -49,6 +49,7 @@ class Decomposition {
     long balances = 0, within = 0, recuts = 0, fixed_within = 0;
     long steps = 0, steps_within = 0, fixed_steps_within = 0;
     double worst = 1.0, fixed_worst = 1.0;
+    double weighted = 0, fixed_weighted = 0;  // sum of max/mean x steps: / steps, the mean
   };
   const Record& record() const { return record_; }
 

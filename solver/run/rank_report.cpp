@@ -29,12 +29,14 @@ std::string rank_report(const Simulation& sim, const RankComm& comm,
     const Decomposition::Record& b = dec->record();
     out += fmt::format(
         "sphdem: load balance over {} ranks, {} balances: max/mean within 1.10 before {:.1f} % "
-        "of them, {:.1f} % of the steps (worst {:.3f}), {} recuts; the first cuts kept would "
-        "have been within 1.10 at {:.1f} % of them, {:.1f} % of the steps (worst {:.3f})\n",
+        "of them, {:.1f} % of the steps (worst {:.3f}, mean over the steps {:.3f}), {} recuts; "
+        "the first cuts kept would have been within 1.10 at {:.1f} % of them, {:.1f} % of the "
+        "steps (worst {:.3f}, mean {:.3f})\n",
         comm.size(), b.balances, 100.0 * b.within / b.balances,
-        100.0 * b.steps_within / std::max(b.steps, 1L), b.worst, b.recuts,
-        100.0 * b.fixed_within / b.balances, 100.0 * b.fixed_steps_within / std::max(b.steps, 1L),
-        b.fixed_worst);
+        100.0 * b.steps_within / std::max(b.steps, 1L), b.worst, b.weighted / std::max(b.steps, 1L),
+        b.recuts, 100.0 * b.fixed_within / b.balances,
+        100.0 * b.fixed_steps_within / std::max(b.steps, 1L), b.fixed_worst,
+        b.fixed_weighted / std::max(b.steps, 1L));
   }
   const double per_step = 1.0 / std::max(steps, 1L);
   const double owned = static_cast<double>(sums[1] + sums[3]);
