@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "propagator/simulation.hpp"
@@ -27,16 +28,20 @@ std::string rank_report(const Simulation& sim, const RankComm& comm,
   std::string out;
   if (const Decomposition* dec = sim.decomposition(); dec && dec->record().balances > 0) {
     const Decomposition::Record& b = dec->record();
+    // the steps each balance's cuts stood for (none where every balance came in relaxation)
+    const auto over_steps = [&](long within, double weighted) {
+      if (b.steps == 0) return std::string("no steps yet");
+      return fmt::format("{:.1f} % of the steps, mean max/mean over them {:.3f}",
+                         100.0 * within / b.steps, weighted / b.steps);
+    };
     out += fmt::format(
         "sphdem: load balance over {} ranks, {} balances: max/mean within 1.10 before {:.1f} % "
-        "of them, {:.1f} % of the steps (worst {:.3f}, mean over the steps {:.3f}), {} recuts; "
-        "the first cuts kept would have been within 1.10 at {:.1f} % of them, {:.1f} % of the "
-        "steps (worst {:.3f}, mean {:.3f})\n",
+        "of them, {} (worst {:.3f}), {} recuts; the first cuts kept would have been within 1.10 "
+        "at {:.1f} % of them, {} (worst {:.3f})\n",
         comm.size(), b.balances, 100.0 * b.within / b.balances,
-        100.0 * b.steps_within / std::max(b.steps, 1L), b.worst, b.weighted / std::max(b.steps, 1L),
-        b.recuts, 100.0 * b.fixed_within / b.balances,
-        100.0 * b.fixed_steps_within / std::max(b.steps, 1L), b.fixed_worst,
-        b.fixed_weighted / std::max(b.steps, 1L));
+        over_steps(b.steps_within, b.weighted), b.worst, b.recuts,
+        100.0 * b.fixed_within / b.balances, over_steps(b.fixed_steps_within, b.fixed_weighted),
+        b.fixed_worst);
   }
   const double per_step = 1.0 / std::max(steps, 1L);
   const double owned = static_cast<double>(sums[1] + sums[3]);
