@@ -10,12 +10,12 @@
 # Model (the fills of one step without a list rebuild, read from the code, 8 B a double):
 #   fluid copy: x y z vx vy vz rho h 1/h (refresh) + P cs eps omega p_term thx thy thz
 #               + the density diffusion's psi and volume                = 19 doubles
-#   sphere copy: x y z vx vy vz wx wy wz after each half step (2 refreshes of 9), fmx fmy
-#               fmz shepard, the drag gain, and the interpolation's reverse scatter of 12
-#                                                                       = 35
+#   sphere copy: x y z vx vy vz wx wy wz after the first half step (the fluid passes read
+#               them), fmx fmy fmz shepard, the drag gain, and the interpolation's reverse
+#               scatter of 12                                           = 26
 #               and before each of the S sub-steps' contact passes, for the copies in the
 #               contact lists only (c per owned sphere): 9 S
-#   bytes / owned / step = 8 (N_f g_f 19 + N_s (35 g_s + 9 S c)) / (N_f + N_s)
+#   bytes / owned / step = 8 (N_f g_f 19 + N_s (26 g_s + 9 S c)) / (N_f + N_s)
 # List rebuilds (migration, the halo's build fills) come on top, every ~20-80 steps.
 # Usage: bash bench/rank_traffic.sh [BUILD_DIR=build]   (PER_RANK, RANKS to override)
 set -euo pipefail
@@ -55,7 +55,7 @@ for n in per_rank:
                       r"\(([\d.]+) in the contact lists", text)
         S, ex, coll, b, gf, gs, c = (float(v) for v in m.groups())
         Nf = nf + nw
-        model = 8 * (Nf * gf * 19 + ns * (35 * gs + 9 * S * c)) / (Nf + ns)
+        model = 8 * (Nf * gf * 19 + ns * (26 * gs + 9 * S * c)) / (Nf + ns)
         print(f"{n:>8} {R:>2} {Nf + ns:>9} {S:>5.1f} {gf:>6.3f} {gs:>6.3f} {c:>6.3f} {ex:>9.1f} {coll:>9.1f} "
               f"{b:>12.0f} {model:>7.0f} {b / model:>10.3f}")
 PY

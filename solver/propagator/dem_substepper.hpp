@@ -66,6 +66,9 @@ class DemSubstepper {
   // rigid group takes the sum of its members' over its mass.
   void add_impulses(const double* impulse);
   int substeps() const { return substeps_; }  // per SPH step
+  // Every halo copy's position and motion as its owner's now (on ranks a half step leaves
+  // them so after the first half only). Collective on ranks.
+  void refresh_halo() { lists_.refresh_halo(s_); }
   // The work of owned sphere j in one SPH step, in list entries (the decomposition's
   // counter): its row's cost in every sub-step of the last step.
   std::uint64_t sphere_work(std::size_t j) const {

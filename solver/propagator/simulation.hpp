@@ -48,6 +48,10 @@ class Simulation {
   void relax();
   // One SPH step with DEM sub-cycling; time advances by dt_sph().
   void step();
+  // On ranks, between steps the spheres' halo copies lag their owners (a step refreshes
+  // them for the fluid passes only): this brings them up to date for an analysis that
+  // reads them (the runner calls it before its hooks). Collective on ranks.
+  void refresh_sphere_copies() { dem_.refresh_halo(); }
 
   double time() const { return time_; }
   long step_count() const { return steps_; }

@@ -206,10 +206,13 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     if (cs.every <= 0) st.next_checkpoint = HUGE_VAL;
   }
   auto run_hooks = [&](bool last) {  // each hook at t = 0, every interval, and at the end
+    bool fresh = false;  // the sphere copies brought up to date for the first hook
     for (std::size_t k = 0; k < opt.hooks.size(); ++k) {
       PeriodicHook& hk = opt.hooks[k];
       const bool due = sim.time() >= st.next_hook[k] * (1.0 - 1e-9);
       if (!due && !(last && st.last_run[k] != sim.time())) continue;
+      if (!fresh) sim.refresh_sphere_copies();
+      fresh = true;
       st.last_run[k] = sim.time();
       const auto t0 = Clock::now();
       hk.action(sim, st.hook_calls[k]++);
