@@ -206,7 +206,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
     if (cs.every <= 0) st.next_checkpoint = HUGE_VAL;
   }
   auto run_hooks = [&](bool last) {  // each hook at t = 0, every interval, and at the end
-    bool fresh = false;  // the sphere copies brought up to date for the first hook
+    bool fresh = false;              // the sphere copies brought up to date for the first hook
     for (std::size_t k = 0; k < opt.hooks.size(); ++k) {
       PeriodicHook& hk = opt.hooks[k];
       const bool due = sim.time() >= st.next_hook[k] * (1.0 - 1e-9);
