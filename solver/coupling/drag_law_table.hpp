@@ -51,6 +51,19 @@ inline constexpr std::tuple kDragLawTable{
         {"beetstra", true, 1e3, "2.80–2.88",
          "Beetstra, van der Hoef & Kuipers (2007), polydisperse, with the local Sauter mean "
          "diameter"}},
+    DragLawRow<RongDongYu>{
+        {"rong", true, 1e3, "–",
+         "Rong, Dong & Yu (2013): Di Felice's form with a voidage exponent fitted to "
+         "lattice-Boltzmann flow through packed beds over a wide voidage range (Re to 1e3 as "
+         "commonly quoted; the paper's own range not checked here)"}},
+    DragLawRow<TennetiGargSubramaniam>{
+        {"tenneti", true, 300, "–",
+         "Tenneti, Garg & Subramaniam (2011), from particle-resolved random arrays at φ "
+         "0.1–0.5, Re ≤ 300; the drag proper ε F of their whole force F"}},
+    DragLawRow<KochHill>{
+        {"koch_hill", true, kAnyReynolds, "–",
+         "Koch & Hill (Hill, Koch & Ladd 2001) as Benyahia, Syamlal & O'Brien (2006) extended "
+         "it to every φ and Re (MFiX); the drag proper ε F of their whole force F"}},
     DragLawRow<NoDrag>{{"none", false, kAnyReynolds, "–",
                         "no drag: the fluid's own viscous operator among fixed spheres (a "
                         "measuring device, not a physical law)"}},

@@ -113,6 +113,80 @@ struct BeetstraPolydisperse {
   }
 };
 
+// Rong, Dong & Yu (2013), from lattice-Boltzmann flow through packed beds: Di Felice's
+// form with a voidage exponent that depends on the voidage too,
+//   f = (1/8) C_d eps^-beta pi d^2 rho |u_s| u_s,  C_d = (0.63 + 4.8/sqrt(Re))^2,
+//   beta = 2.65 (eps + 1) - (5.3 - 3.5 eps) eps^2 exp(-(1.5 - log10 Re)^2 / 2).
+struct RongDongYu {
+  static double beta(double eps, double re) {
+    const double l = 1.5 - std::log10(re);
+    return 2.65 * (eps + 1.0) - (5.3 - 3.5 * eps) * eps * eps * std::exp(-0.5 * l * l);
+  }
+  double coefficient(double eps, double us, double d, const Fluid& f) const {
+    const double re = floored_reynolds(reynolds(us, d, f));
+    const double s = 0.63 * std::sqrt(us) + 4.8 * std::sqrt(f.mu / (f.rho * d));
+    return 0.125 * s * s * std::pow(eps, -beta(eps, re)) * M_PI * d * d * f.rho;
+  }
+};
+
+// Tenneti, Garg & Subramaniam (2011), from particle-resolved simulation of fixed random
+// arrays (phi = 1 - eps in 0.1-0.5, Re 0.01-300). Their F is the whole fluid force over
+// 3 pi mu d u_s, the mean pressure gradient's share included; the drag proper, which the
+// solver adds to -V grad p, is eps F of it (in a periodic array n F_tot = -grad p and
+// eps (-grad p) = n f_drag):
+//   F = (1 + 0.15 Re^0.687)/eps^3 + 5.81 phi/eps^3 + 0.48 phi^(1/3)/eps^4
+//       + phi^3 Re (0.95 + 0.61 phi^3/eps^2),   f = eps F 3 pi mu d u_s.
+struct TennetiGargSubramaniam {
+  static double total_force(double eps, double re) {
+    const double phi = 1.0 - eps, e3 = eps * eps * eps, p3 = phi * phi * phi;
+    return (1.0 + 0.15 * std::pow(re, 0.687)) / e3 + 5.81 * phi / e3 +
+           0.48 * std::cbrt(phi) / (e3 * eps) + p3 * re * (0.95 + 0.61 * p3 / (eps * eps));
+  }
+  double coefficient(double eps, double us, double d, const Fluid& f) const {
+    const double re = floored_reynolds(reynolds(us, d, f));
+    return eps * total_force(eps, re) * 3.0 * M_PI * f.mu * d;
+  }
+};
+
+// Koch & Hill (Hill, Koch & Ladd 2001, lattice-Boltzmann random arrays) as Benyahia,
+// Syamlal & O'Brien (2006) extended it to every phi and Re (MFiX's form). Re_h = Re/2 is
+// their radius-based number, phi = 1 - eps, w = exp(-10 (0.4 - phi)/phi):
+//   F0 = (1 - w) (1 + 3 sqrt(phi/2) + (135/64) phi ln phi + 17.14 phi)
+//                / (1 + 0.681 phi - 8.48 phi^2 + 8.16 phi^3) + w 10 phi/eps^3   (phi < 0.4)
+//   F1 = sqrt(2/phi)/40 (phi <= 0.1), 0.11 + 5.1e-4 exp(11.6 phi) (phi > 0.1)
+//   F2 = as F0 with 17.89, 11.03, 15.41                                           (phi < 0.4)
+//   F0 = F2 = 10 phi/eps^3                                                        (phi >= 0.4)
+//   F3 = 0.9351 phi + 0.03667 (phi < 0.0953), 0.0673 + 0.212 phi + 0.0232/eps^5
+//   F = 1 + 3 Re_h/8 (phi <= 0.01, Re_h <= (F2 - 1)/(3/8 - F3)), F0 + F1 Re_h^2
+//       (phi > 0.01, Re_h up to where it meets F2 + F3 Re_h), else F2 + F3 Re_h;
+// F is the whole force over 3 pi mu d u_s, as Tenneti's: f = eps F 3 pi mu d u_s.
+struct KochHill {
+  static double blend(double phi, double a, double b, double c) {  // F0 (a, b, c) or F2
+    const double w = std::exp(-10.0 * (0.4 - phi) / phi),
+                 dense = 10.0 * phi / std::pow(1.0 - phi, 3);
+    if (phi >= 0.4) return dense;
+    const double phi_ln_phi = phi > 0.0 ? phi * std::log(phi) : 0.0;
+    const double dilute = (1.0 + 3.0 * std::sqrt(0.5 * phi) + 135.0 / 64.0 * phi_ln_phi + a * phi) /
+                          (1.0 + 0.681 * phi - b * phi * phi + c * phi * phi * phi);
+    return (1.0 - w) * dilute + w * dense;
+  }
+  static double total_force(double eps, double re) {
+    const double phi = 1.0 - eps, re_h = 0.5 * re;
+    const double f0 = blend(phi, 17.14, 8.48, 8.16), f2 = blend(phi, 17.89, 11.03, 15.41);
+    const double f3 =
+        phi < 0.0953 ? 0.9351 * phi + 0.03667 : 0.0673 + 0.212 * phi + 0.0232 / std::pow(eps, 5);
+    if (phi <= 0.01) return re_h <= (f2 - 1.0) / (0.375 - f3) ? 1.0 + 0.375 * re_h : f2 + f3 * re_h;
+    const double f1 =
+        phi <= 0.1 ? std::sqrt(2.0 / phi) / 40.0 : 0.11 + 5.1e-4 * std::exp(11.6 * phi);
+    const double re_meet = (f3 + std::sqrt(f3 * f3 - 4.0 * f1 * (f0 - f2))) / (2.0 * f1);
+    return re_h <= re_meet ? f0 + f1 * re_h * re_h : f2 + f3 * re_h;
+  }
+  double coefficient(double eps, double us, double d, const Fluid& f) const {
+    const double re = floored_reynolds(reynolds(us, d, f));
+    return eps * total_force(eps, re) * 3.0 * M_PI * f.mu * d;
+  }
+};
+
 // No drag: the fluid and the spheres exchange only the pressure (and, interpolated, the
 // viscous) forces. A measuring device, not a physical law: the fluid's own viscous
 // operator at eps < 1 among fixed spheres (viscosity_validation), which the drag of a
