@@ -24,12 +24,17 @@ Diagnostics diagnostics(const Simulation& sim) {
   const BasePorePressure base{rho0, std::abs(scene.gravity[2]), scene.fill_height(),
                               scene.fluid.spacing};
   const RankComm& comm = sim.comm();
-  d.excess_pore_pressure_base = excess_pore_pressure_base(f, base, comm);
-  const double k = std::visit([](const auto& law) { return law.normal.k; }, sim.contact_law());
-  const double area = scene.box.length(0) * scene.box.length(1);
-  d.wall_load_base = wall_load_base(s, k, area, base, comm);
-  d.fluid_load_base =
-      fluid_load_base(f, s, sim.walls_on_spheres_z(), sim.hydrostatic_split(), area, base, comm);
+  if (sim.flow().on()) {  // periodic in z: no base, the flow's U and pressure drop instead
+    d.superficial_velocity = sim.flow().superficial_velocity();
+    d.pressure_drop = sim.flow().pressure_drop(scene.gravity[2]);
+  } else {
+    d.excess_pore_pressure_base = excess_pore_pressure_base(f, base, comm);
+    const double k = std::visit([](const auto& law) { return law.normal.k; }, sim.contact_law());
+    const double area = scene.box.length(0) * scene.box.length(1);
+    d.wall_load_base = wall_load_base(s, k, area, base, comm);
+    d.fluid_load_base =
+        fluid_load_base(f, s, sim.walls_on_spheres_z(), sim.hydrostatic_split(), area, base, comm);
+  }
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     if (f.kind[a] != kFluid) continue;
     d.fluid_mass += f.mass[a];

@@ -21,8 +21,9 @@ struct Diagnostics {
       0;  // analysis/pore_pressure.hpp: the spheres' load on the wall, same unit
   double fluid_load_base =
       0;  // analysis/pore_pressure.hpp: the fluid's excess load on the wall, same unit
-  std::vector<double> vz_mean, slip_z_mean, com_z;  // per species
-  std::vector<std::size_t> count;                   // spheres per species
+  double superficial_velocity = 0, pressure_drop = 0;  // propagator/flow_controller.hpp
+  std::vector<double> vz_mean, slip_z_mean, com_z;     // per species
+  std::vector<std::size_t> count;                      // spheres per species
 };
 
 Diagnostics diagnostics(const Simulation& sim);

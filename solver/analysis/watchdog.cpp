@@ -44,9 +44,13 @@ WatchdogAlarm sphere_alarm(const Simulation& sim, std::size_t j, const std::stri
 // Past the periodic faces by more than half a box: positions are wrapped into the box
 // only when the lists are rebuilt (a fraction of the skin out at most), so a particle
 // that far out has moved more than a box since.
-bool far_sideways(const Box& box, double x, double y) {
-  return x < box.lo[0] - 0.5 * box.length(0) || x > box.hi[0] + 0.5 * box.length(0) ||
-         y < box.lo[1] - 0.5 * box.length(1) || y > box.hi[1] + 0.5 * box.length(1);
+bool far_past_periodic_faces(const Box& box, double x, double y, double z) {
+  const double p[3] = {x, y, z};
+  for (int d = 0; d < 3; ++d)
+    if (box.periodic[d] &&
+        (p[d] < box.lo[d] - 0.5 * box.length(d) || p[d] > box.hi[d] + 0.5 * box.length(d)))
+      return true;
+  return false;
 }
 
 // Why a contact went wrong: too few sub-steps per contact, or a spring too soft.
@@ -130,13 +134,14 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
   // kernel support 2h above it (the cell list keeps it in the top cell, its neighbours all
   // below); one past that has no neighbour left and has left the fluid.
   const double fluid_top_z = top_z + kernel::kSupport * sc.fluid.lattice_h();
+  const bool walled = !box.periodic[2];  // a column periodic in z has no floor or top
   for (long a = 0; a < nf; ++a) {
     if (!std::isfinite(f.x[a] + f.y[a] + f.z[a] + f.vx[a] + f.vy[a] + f.vz[a] + f.rho[a])) {
       bad_fluid = std::min(bad_fluid, a);
       continue;
     }
-    const bool outside =
-        f.z[a] < floor_z || f.z[a] > fluid_top_z || far_sideways(box, f.x[a], f.y[a]);
+    const bool outside = (walled && (f.z[a] < floor_z || f.z[a] > fluid_top_z)) ||
+                         far_past_periodic_faces(box, f.x[a], f.y[a], f.z[a]);
     if (outside) out_fluid = std::min(out_fluid, a);
     if (f.kind[a] != kFluid) continue;
     const double e = std::abs(f.rho[a] / (f.eps[a] * rho0) - 1.0);
@@ -151,7 +156,8 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
       bad_sphere = std::min(bad_sphere, j);
       continue;
     }
-    const bool outside = s.z[j] < box.lo[2] || s.z[j] > top_z || far_sideways(box, s.x[j], s.y[j]);
+    const bool outside = (walled && (s.z[j] < box.lo[2] || s.z[j] > top_z)) ||
+                         far_past_periodic_faces(box, s.x[j], s.y[j], s.z[j]);
     if (outside) out_sphere = std::min(out_sphere, j);
     const double o = s.overlap_max[j] / (2.0 * s.radius[j]);
     if (o > worst_overlap) {
@@ -167,7 +173,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
     return fluid_alarm(sim, bad_fluid, "non-finite position, velocity or density", NAN, inf,
                        fluid_cause(sim));
   if (out_sphere < ns) {
-    const bool below = s.z[out_sphere] < box.lo[2];
+    const bool below = walled && s.z[out_sphere] < box.lo[2];
     return sphere_alarm(
         sim, out_sphere, below ? "left the domain through the bottom wall" : "left the domain",
         s.z[out_sphere], below ? box.lo[2] : top_z,
@@ -177,7 +183,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
                                   "column (domain.size), or find what threw it"));
   }
   if (out_fluid < nf) {
-    const bool below = f.z[out_fluid] < floor_z;
+    const bool below = walled && f.z[out_fluid] < floor_z;
     return fluid_alarm(
         sim, out_fluid, below ? "passed through the bottom wall" : "left the domain",
         f.z[out_fluid], below ? floor_z : fluid_top_z,

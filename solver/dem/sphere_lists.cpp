@@ -15,6 +15,7 @@ void SphereLists::rebuild(DemParticles& s) {
   for (std::size_t i = 0; i < s.n_owned; ++i) {
     s.x[i] = box_.wrap(0, s.x[i]);
     s.y[i] = box_.wrap(1, s.y[i]);
+    s.z[i] = box_.wrap(2, s.z[i]);
   }
   s.resize(s.n_owned);
   if (decomposition_) distribute(s);

@@ -86,6 +86,7 @@ double DemSubstepper::force_rows(const Contact& contact, bool accumulate_mean, d
   const HaloImages images = lists_.halo().images();
   const FluidForceWindow window{accumulate_mean, weight, p_.variational};
   const auto& g = p_.gravity;
+  const auto& G = p_.mean_pressure_gradient;
   const drag::Fluid& fluid = p_.fluid;
   double* const drag_c = s.drag_c.data();
   const PairIsa isa = drag_.isa;
@@ -119,7 +120,7 @@ double DemSubstepper::force_rows(const Contact& contact, bool accumulate_mean, d
                             fluid_forces(p_.drag, s, fluid, block, block_end, window, drag_c, isa));
       for (std::size_t j = block; j < block_end; ++j) {
         const ContactRow c =
-            contact_row(s, contacts, contact, bf, history, images, 0.0, dt_springs, j);
+            contact_row(s, contacts, contact, bf, history, images, p_.wall_z, dt_springs, j);
         if constexpr (Contact::kHistory) {
           if (advance.correct) {  // the spin as the velocity (rotation.hpp), tau_old = t
             const double I = s.inertia(j), cc = 0.5 * h / I;
@@ -141,9 +142,10 @@ double DemSubstepper::force_rows(const Contact& contact, bool accumulate_mean, d
         const double fx = kFluid ? s.fx[j] : 0.0, fy = kFluid ? s.fy[j] : 0.0,
                      fz = kFluid ? s.fz[j] : 0.0;
         const double inv_m = 1.0 / s.mass[j];
-        const double ax = (c.fx + fx) * inv_m + g[0];
-        const double ay = (c.fy + fy) * inv_m + g[1];
-        const double az = (c.fz + fz) * inv_m + g[2];
+        const double vm = mean_gradient_share(s.radius[j], inv_m);
+        const double ax = (c.fx + fx) * inv_m + g[0] + G[0] * vm;
+        const double ay = (c.fy + fy) * inv_m + g[1] + G[1] * vm;
+        const double az = (c.fz + fz) * inv_m + g[2] + G[2] * vm;
         if (advance.correct) {  // v_n + h (a_old + a_new)/2
           const double vx = s.vx[j] + 0.5 * h * (ax - s.ax[j]);
           const double vy = s.vy[j] + 0.5 * h * (ay - s.ay[j]);

@@ -65,6 +65,7 @@ class DemSubstepper {
   // Adds impulse (three values per owned sphere) to the owned spheres' velocities; a
   // rigid group takes the sum of its members' over its mass.
   void add_impulses(const double* impulse);
+  void set_mean_pressure_gradient(const std::array<double, 3>& G) { p_.mean_pressure_gradient = G; }
   int substeps() const { return substeps_; }  // per SPH step
   // Every halo copy's position and motion as its owner's now (on ranks a half step leaves
   // them so after the first half only). Collective on ranks.

@@ -39,7 +39,7 @@ bool MultirateHalfStep::take(const DemStepParams& p, DemParticles& s, SphereList
   const HaloImages images = lists.halo().images();
   near_.clear();
   for (long i = 0; i < n; ++i) {
-    bool near = s.z[i] - s.radius[i] < margin;  // the wall at z = 0
+    bool near = s.z[i] - s.radius[i] - p.wall_z < margin;  // the bottom wall
     for (std::uint32_t k = contacts.offset[i]; !near && k < contacts.offset[i + 1]; ++k) {
       double dx, dy, dz;
       const std::size_t j = owned_image(images, contacts.neighbour[k], s.x[i], s.y[i], s.z[i], s.x,
@@ -112,6 +112,7 @@ double MultirateHalfStep::free_step(const DemStepParams& p, DemParticles& s, Sph
   const long n = static_cast<long>(s.n_owned);
   const FluidForceWindow window{true, weight, p.variational};
   const auto& g = p.gravity;
+  const auto& G = p.mean_pressure_gradient;
   double* const drag_c = s.drag_c.data();
   const PairIsa isa = drag.isa;
   double max_step2 = 0.0, rate_max = 0.0;
@@ -125,9 +126,10 @@ double MultirateHalfStep::free_step(const DemStepParams& p, DemParticles& s, Sph
         fluid_forces(p.drag, s, p.fluid, block, block_end, FluidForceWindow{}, drag_c, isa);
         for (std::size_t j = block; j < block_end; ++j) {
           const double inv_m = 1.0 / s.mass[j];
-          s.ax[j] = s.fx[j] * inv_m + g[0];
-          s.ay[j] = s.fy[j] * inv_m + g[1];
-          s.az[j] = s.fz[j] * inv_m + g[2];
+          const double vm = mean_gradient_share(s.radius[j], inv_m);
+          s.ax[j] = s.fx[j] * inv_m + g[0] + G[0] * vm;
+          s.ay[j] = s.fy[j] * inv_m + g[1] + G[1] * vm;
+          s.az[j] = s.fz[j] * inv_m + g[2] + G[2] * vm;
         }
       }
       for (std::size_t j = block; j < block_end; ++j) {
@@ -141,9 +143,10 @@ double MultirateHalfStep::free_step(const DemStepParams& p, DemParticles& s, Sph
                           fluid_forces(p.drag, s, p.fluid, block, block_end, window, drag_c, isa));
       for (std::size_t j = block; j < block_end; ++j) {
         const double inv_m = 1.0 / s.mass[j];
-        s.ax[j] = s.fx[j] * inv_m + g[0];
-        s.ay[j] = s.fy[j] * inv_m + g[1];
-        s.az[j] = s.fz[j] * inv_m + g[2];
+        const double vm = mean_gradient_share(s.radius[j], inv_m);
+        s.ax[j] = s.fx[j] * inv_m + g[0] + G[0] * vm;
+        s.ay[j] = s.fy[j] * inv_m + g[1] + G[1] * vm;
+        s.az[j] = s.fz[j] * inv_m + g[2] + G[2] * vm;
         correct(s, j, 0.5 * h, aox[j - block], aoy[j - block], aoz[j - block]);
       }
     }
@@ -175,6 +178,7 @@ double MultirateHalfStep::near_substeps(const Contact& contact, const DemStepPar
   const HaloImages images = lists.halo().images();
   const FluidForceWindow window{true, weight, p.variational};
   const auto& g = p.gravity;
+  const auto& G = p.mean_pressure_gradient;
   double* const drag_c = s.drag_c.data();
   double* const aox = a_old_.x.data();
   double* const aoy = a_old_.y.data();
@@ -201,12 +205,13 @@ double MultirateHalfStep::near_substeps(const Contact& contact, const DemStepPar
       const std::size_t j = near[q];
       rate_max = std::max(
           rate_max, fluid_forces(p.drag, s, p.fluid, j, j + 1, window, drag_c, PairIsa::kBaseline));
-      const ContactRow c = contact_row(s, contacts, contact, bf, history, images, 0.0, h, j);
+      const ContactRow c = contact_row(s, contacts, contact, bf, history, images, p.wall_z, h, j);
       store_torque_and_overlap<Contact>(s, j, c);
       const double inv_m = 1.0 / s.mass[j];
-      s.ax[j] = (c.fx + s.fx[j]) * inv_m + g[0];
-      s.ay[j] = (c.fy + s.fy[j]) * inv_m + g[1];
-      s.az[j] = (c.fz + s.fz[j]) * inv_m + g[2];
+      const double vm = mean_gradient_share(s.radius[j], inv_m);
+      s.ax[j] = (c.fx + s.fx[j]) * inv_m + g[0] + G[0] * vm;
+      s.ay[j] = (c.fy + s.fy[j]) * inv_m + g[1] + G[1] * vm;
+      s.az[j] = (c.fz + s.fz[j]) * inv_m + g[2] + G[2] * vm;
     }
   }
 #pragma omp parallel for schedule(static) if (m > kMinParallelSpheres)

@@ -44,7 +44,8 @@ Simulation::Simulation(const Scene& scene, const RankComm& comm)
       comm_(comm),
       params_(compile_step_params(scene_)),
       dem_(params_.box, params_.dem, placed_spheres(scene_, fluid_), comm_),
-      fluid_halo_(comm_) {
+      fluid_halo_(comm_),
+      flow_(scene_.flow, params_.box, params_.fluid.eos.rho0) {
   build_initial_state();
 }
 
@@ -54,8 +55,14 @@ Simulation::Simulation(const Scene& scene, const CheckpointReader& r, const Rank
       params_(compile_step_params(scene_)),
       fluid_(read_particle_state<FluidParticles>(r, "fluid/")),
       dem_(params_.box, params_.dem, DemSubstepper::read_spheres(r), comm_),
-      fluid_halo_(comm_) {
+      fluid_halo_(comm_),
+      flow_(scene_.flow, params_.box, params_.fluid.eos.rho0) {
   dem_.read_state(r);
+  if (flow_.on() && r.has("run/flow_pressure_gradient")) {
+    const std::vector<double> G = r.array<double>("run/flow_pressure_gradient");
+    flow_.set_pressure_gradient({G.at(0), G.at(1), G.at(2)});
+    dem_.set_mean_pressure_gradient(flow_.pressure_gradient());
+  }
   time_ = r.scalar<double>("run/time");
   dt_sph_ = r.scalar<double>("run/dt_sph");
   steps_ = r.scalar<std::int64_t>("run/step");
@@ -96,6 +103,10 @@ void Simulation::write_state(CheckpointWriter& w) const {
   w.scalar("run/cell_size", cell_size_);
   w.scalar<std::int64_t>("run/sort_interval", sort_interval_);
   w.scalar<std::int64_t>("run/neighbour_builds", neighbour_builds_);
+  if (flow_.on()) {
+    const auto& G = flow_.pressure_gradient();
+    w.array("run/flow_pressure_gradient", std::vector<double>(G.begin(), G.end()));
+  }
   w.scalar<std::int64_t>("run/rebuilds_all_next_step", rebuilds_all_next_step());
 }
 
@@ -122,7 +133,8 @@ double Simulation::fluid_cutoff() const {
 
 // Hydrostatic start (replaces most of the thesis' ~1000 relaxation steps): on the
 // lattice, m_a/rho_a = dx^3 exactly, and rho_a = eps_a rho0 (1 + rho0 g (H - z)/B)^(1/gamma)
-// is the Tait density of the hydrostatic pressure at the particle's voidage.
+// is the Tait density of the hydrostatic pressure at the particle's voidage (P = 0 in a
+// column periodic in z: the flow's body force carries the weight).
 void Simulation::build_initial_state() {
   const FluidStepParams& p = params_.fluid;
   const double dx = p.spacing, dx3 = dx * dx * dx;
@@ -146,7 +158,7 @@ void Simulation::build_initial_state() {
   rebuild_neighbours();
   compute_voidage();
   for (std::size_t a = 0; a < fluid_.n_owned; ++a) {
-    const double P = p.eos.rho0 * g * (H - fluid_.z[a]);
+    const double P = params_.box.periodic[2] ? 0.0 : p.eos.rho0 * g * (H - fluid_.z[a]);
     fluid_.rho[a] = p.eos.density(P, fluid_.eps[a]);
     fluid_.mass[a] = fluid_.rho[a] * dx3;
   }
@@ -164,6 +176,7 @@ void Simulation::rebuild_neighbours() {
   for (std::size_t a = 0; a < f.n_owned; ++a) {
     f.x[a] = box.wrap(0, f.x[a]);
     f.y[a] = box.wrap(1, f.y[a]);
+    f.z[a] = box.wrap(2, f.z[a]);  // a column periodic in z
   }
   const double support = fluid_cutoff();
   hmax_at_build_ = f.n_owned > 0 ? support / kernel::kSupport : 0.0;
@@ -398,13 +411,15 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
   compute_fluid_acceleration(f, fluid_pairs_, params_.fluid.momentum, pair_scratch_);
   for (auto* v : {&f.thx, &f.thy, &f.thz}) fluid_halo_.fill(*v);
   const auto& g = params_.gravity;
+  // the mean pressure gradient of an imposed flow: G / rho_f a unit mass (0 without one)
+  const std::array<double, 3> bg = flow_.fluid_acceleration();
   const long n = static_cast<long>(f.n_owned);
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {
     const bool mobile = f.kind[a] == kFluid;
-    f.ax[a] = mobile ? f.thx[a] + g[0] : 0.0;
-    f.ay[a] = mobile ? f.thy[a] + g[1] : 0.0;
-    f.az[a] = mobile ? f.thz[a] + g[2] : 0.0;
+    f.ax[a] = mobile ? f.thx[a] + g[0] + bg[0] : 0.0;
+    f.ay[a] = mobile ? f.thy[a] + g[1] + bg[1] : 0.0;
+    f.az[a] = mobile ? f.thz[a] + g[2] + bg[2] : 0.0;
   }
   lap(PassTimers::kMomentum);
   if (variational)
@@ -539,6 +554,7 @@ void Simulation::advance(bool hold_spheres) {
                            drag_phi_.data(), f.n_owned, dt, sphere_scratch_, drag_impulse_);
     dem_.add_impulses(drag_impulse_.data());
   }
+  if (flow_.on()) control_flow(time_ + (hold_spheres ? 0.0 : dt), dt, hold_spheres);
   lap(PassTimers::kIntegrate);
   if (!hold_spheres) dem_.half_step(dt, /*first_half=*/false);
   lap(PassTimers::kDem);
@@ -548,6 +564,41 @@ void Simulation::advance(bool hold_spheres) {
   }
   next_dt();
   lap(PassTimers::kOther);
+}
+
+// The flow controller's correction at the end of a step's corrector (flow_controller.hpp):
+// every fluid particle takes du (and the half step's drift of it), every sphere the same
+// pressure-gradient impulse rho_f V_j du, and G the rest of the step.
+void Simulation::control_flow(double t, double dt, bool hold_spheres) {
+  FluidParticles& f = fluid_;
+  const long n = static_cast<long>(f.n_owned);
+  std::vector<double> sums{0.0, 0.0, 0.0, 0.0};  // momentum and mass of the fluid
+  for (long a = 0; a < n; ++a) {
+    if (f.kind[a] != kFluid) continue;
+    sums[0] += f.mass[a] * f.vx[a];
+    sums[1] += f.mass[a] * f.vy[a];
+    sums[2] += f.mass[a] * f.vz[a];
+    sums[3] += f.mass[a];
+  }
+  comm_.sum(sums);
+  const std::array<double, 3> du = flow_.correct({sums[0], sums[1], sums[2]}, sums[3], t, dt);
+  for (long a = 0; a < n; ++a) {
+    if (f.kind[a] != kFluid) continue;
+    f.vx[a] += du[0];
+    f.vy[a] += du[1];
+    f.vz[a] += du[2];
+    f.x[a] += 0.5 * dt * du[0];
+    f.y[a] += 0.5 * dt * du[1];
+    f.z[a] += 0.5 * dt * du[2];
+  }
+  dem_.set_mean_pressure_gradient(flow_.pressure_gradient());
+  if (hold_spheres) return;
+  DemParticles& s = dem_.spheres();
+  const double rho_f = params_.fluid.eos.rho0;
+  flow_impulse_.resize(3 * s.n_owned);
+  for (std::size_t j = 0; j < s.n_owned; ++j)
+    for (int k = 0; k < 3; ++k) flow_impulse_[3 * j + k] = rho_f * s.volume(j) * du[k];
+  dem_.add_impulses(flow_impulse_.data());
 }
 
 void Simulation::next_dt() {

@@ -16,6 +16,7 @@
 #include "domain/rank_comm.hpp"
 #include "io/checkpoint_file.hpp"
 #include "propagator/dem_substepper.hpp"
+#include "propagator/flow_controller.hpp"
 #include "propagator/pass_timers.hpp"
 #include "propagator/step_params.hpp"
 #include "scene/scene.hpp"
@@ -69,6 +70,8 @@ class Simulation {
   // The hydrostatic pressure the variational coupling splits off (coupling.hydrostatic_split;
   // zero without it).
   const HydrostaticPressure& hydrostatic_split() const { return params_.fluid.split; }
+  // The imposed flow of a column periodic in z (off otherwise): U, G and the pressure drop.
+  const FlowController& flow() const { return flow_; }
   FluidParticles& fluid() { return fluid_; }
   const FluidParticles& fluid() const { return fluid_; }
   DemParticles& spheres() { return dem_.spheres(); }
@@ -148,6 +151,7 @@ class Simulation {
   void apply_variational_pressure(bool hold_spheres);
   double fluid_cutoff() const;
   void next_dt();
+  void control_flow(double t, double dt, bool hold_spheres);
 
   Scene scene_;
   RankComm comm_;
@@ -190,6 +194,8 @@ class Simulation {
   long steps_ = 0;
   std::size_t voidage_clamped_ = 0, omega_bounded_ = 0;
   double walls_on_spheres_z_ = 0.0;
+  FlowController flow_;
+  std::vector<double> flow_impulse_;  // the spheres' share of a flow correction
   PassTimers timers_;
 };
 

@@ -107,7 +107,7 @@ void Simulation::decompose(double cell, bool keep_cells) {
   s.resize(s.n_owned);
   dest.resize(s.n_owned);
   for (std::size_t i = 0; i < s.n_owned; ++i)
-    dest[i] = decomposition_->owner(box.wrap(0, s.x[i]), box.wrap(1, s.y[i]), s.z[i]);
+    dest[i] = decomposition_->owner(box.wrap(0, s.x[i]), box.wrap(1, s.y[i]), box.wrap(2, s.z[i]));
   keep_share(comm_, s, dest);
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "scene/time_step.hpp"
@@ -27,8 +28,9 @@ StepParams compile_step_params(const Scene& scene) {
   f.max_dt = scene.time.max_dt_sph;
   f.relax_steps = scene.startup.relax_steps;
   f.relax_damping = scene.startup.damping;
-  f.diffusion = DensityDiffusion{fs.density_diffusion, fs.sound_speed, f.eos, scene.gravity[2],
-                                 f.fill_height};
+  // no hydrostatic correction where no hydrostatic pressure is (periodic in z)
+  f.diffusion = DensityDiffusion{fs.density_diffusion, fs.sound_speed, f.eos,
+                                 scene.periodic_z() ? 0.0 : scene.gravity[2], f.fill_height};
   if (scene.hydrostatic_split)
     f.split = HydrostaticPressure{f.eos.rho0, scene.gravity[2], f.fill_height};
 
@@ -66,6 +68,7 @@ StepParams compile_step_params(const Scene& scene) {
   d.rotation = contact_law_has_history(d.law);
   d.skin = scene.contact.skin;
   d.gravity = scene.gravity;
+  if (scene.periodic_z()) d.wall_z = -std::numeric_limits<double>::infinity();
   d.fluid_force = scene.fluid.enabled;
   d.drag = scene.drag;
   d.fluid = drag::Fluid{fs.density, fs.viscosity};

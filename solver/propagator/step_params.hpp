@@ -54,11 +54,22 @@ struct DemStepParams {
   // Stokes time): a sediment's drag is ~10 times Stokes'.
   double drag_time_fraction = 0.1;
   std::array<double, 3> gravity{};
+  // The spheres' flat bottom wall (normal +z); -infinity: none (a column periodic in z).
+  double wall_z = 0.0;
+  // The mean pressure gradient G (Pa/m) of an imposed flow, on each sphere as G V_j
+  // (propagator/flow_controller.hpp); set each step.
+  std::array<double, 3> mean_pressure_gradient{0.0, 0.0, 0.0};
   bool fluid_force = true;  // false: dry DEM, no fluid and so no fluid force
   drag::DragLaw drag;
   drag::Fluid fluid;
   bool variational = false;  // the pressure force is switched per evaluation, not in fm
 };
+
+// V / m of a sphere of radius r: the share of the mean pressure gradient G in its
+// acceleration, G V / m.
+inline double mean_gradient_share(double r, double inv_m) {
+  return 4.0 / 3.0 * 3.14159265358979323846 * r * r * r * inv_m;
+}
 
 struct StepParams {
   Box box;

@@ -58,6 +58,15 @@ const std::vector<LogColumn>& log_columns() {
        "less the clear column's weight) over A ρf |g| H: with `wall_load_base` it closes the "
        "column's momentum balance, (1 − n)(ρs/ρf − 1) at steady settling (eq. 15)",
        false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.fluid_load_base); }},
+      {"superficial_velocity", "m/s",
+       "the fluid's superficial velocity along z, Σ m_a u_z,a / (ρf V_box), of a column periodic "
+       "in z: `flow`'s U(t), which the flow controller holds (0 elsewhere)",
+       false, [](std::string& r, D d, S) { put(r, "{:.9g}", d.superficial_velocity); }},
+      {"pressure_drop", "Pa",
+       "the frictional pressure drop over a column periodic in z, (G_z + ρf g_z) L_z with G the "
+       "mean pressure gradient the flow controller sets (0 elsewhere): the bed's buoyant weight "
+       "per area once it is fluidised",
+       false, [](std::string& r, D d, S) { put(r, "{:.9g}", d.pressure_drop); }},
       {"vz_mean", "m/s", "mean vertical velocity of the spheres of the species", true,
        [](std::string& r, D d, S s) { put(r, "{:.17g}", d.vz_mean[s]); }},
       {"slip_z_mean", "m/s", "mean superficial slip ε_i (u_f,z − v_z) (2.74) of the species", true,

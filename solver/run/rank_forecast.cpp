@@ -34,6 +34,7 @@ RankForecast forecast_ranks(const Simulation& sim, int ranks) {
   auto add = [&](double x, double y, double z, std::uint64_t work) {
     x = box.wrap(0, x);
     y = box.wrap(1, y);
+    z = box.wrap(2, z);
     const std::size_t c = grid.index(grid.cell_of(x, y, z));
     cells.points[c].push_back({x, y, z});
     cells.work[c] += work;

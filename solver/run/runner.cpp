@@ -461,13 +461,20 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets, i
   const double setup_wall = start_cpu + since(t_setup);
   std::string s;
   s += fmt::format("scene            {} ({})\n", sc.name, sc.source);
-  s += fmt::format(
-      "domain           {} x {} x {} m, periodic in x and y, wall at z = 0, fluid to z = {} m\n",
-      sc.box.length(0), sc.box.length(1), sc.box.length(2), sc.fill_height());
+  if (sc.periodic_z())
+    s += fmt::format(
+        "domain           {} x {} x {} m, periodic in x, y and z, filled with fluid; U(t) of "
+        "`flow` held by the mean pressure gradient (from {} m/s to {} m/s)\n",
+        sc.box.length(0), sc.box.length(1), sc.box.length(2), sc.flow.superficial_velocity.front(),
+        sc.flow.superficial_velocity.back());
+  else
+    s += fmt::format(
+        "domain           {} x {} x {} m, periodic in x and y, wall at z = 0, fluid to z = {} m\n",
+        sc.box.length(0), sc.box.length(1), sc.box.length(2), sc.fill_height());
   s += fmt::format(
       "SPH particles    {} fluid + {} wall ({} layers), spacing dx = {} m, h = {:.4g} m\n",
-      sim.fluid_count(), sim.wall_count(), sc.fluid.wall_layers, sc.fluid.spacing,
-      sc.fluid.lattice_h());
+      sim.fluid_count(), sim.wall_count(), sc.periodic_z() ? 0 : sc.fluid.wall_layers,
+      sc.fluid.spacing, sc.fluid.lattice_h());
   const auto& sp = sim.spheres();
   std::vector<std::size_t> count(sc.species.size(), 0);
   for (std::size_t j = 0; j < sp.n_owned; ++j) ++count[sp.species[j]];

@@ -78,8 +78,10 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
   const double dx = sc.fluid.spacing;
   const int nx = static_cast<int>(std::lround(sc.box.length(0) / dx));
   const int ny = static_cast<int>(std::lround(sc.box.length(1) / dx));
-  const int nz = sc.fluid.enabled ? static_cast<int>(std::floor(sc.fill_height() / dx + 1e-6)) : 0;
-  const int nw = sc.fluid.enabled ? sc.fluid.wall_layers : 0;
+  // periodic in z: the whole height, no wall (the loader has Lz/dx whole)
+  const double height = sc.periodic_z() ? sc.box.length(2) : sc.fill_height();
+  const int nz = sc.fluid.enabled ? static_cast<int>(std::floor(height / dx + 1e-6)) : 0;
+  const int nw = sc.fluid.enabled && !sc.periodic_z() ? sc.fluid.wall_layers : 0;
   const std::size_t n = static_cast<std::size_t>(nx) * ny * (nz + nw);
   f.resize(n);
   f.n_owned = n;
@@ -162,7 +164,8 @@ void place_particles(const Scene& sc, FluidParticles& f, DemParticles& s) {
                         sc.source, gi, nearest, d_max));
     }
     const double dz = L.fcc ? 0.5 * L.spacing[2] : L.spacing[2];  // between layers
-    if (L.origin[2] - 0.5 * dz < 0 || L.origin[2] < 0.5 * d_max * (1.0 - 1e-12))
+    if (!sc.periodic_z() &&
+        (L.origin[2] - 0.5 * dz < 0 || L.origin[2] < 0.5 * d_max * (1.0 - 1e-12)))
       throw SceneError(
           fmt::format("{}: key 'particles.{}.min': the block cuts the bottom wall", sc.source, gi));
     const int per_cell = L.fcc ? 2 : 1;  // sites a cell in one layer

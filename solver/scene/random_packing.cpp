@@ -27,14 +27,14 @@ double sphere_volume(double d) {
 class SphereGrid {
  public:
   // Cells of width >= min_width over the box in x and y (wrapping on periodic axes) and
-  // over [zlo, zhi] in z.
-  SphereGrid(const Box& box, double zlo, double zhi, double min_width) : box_(box) {
+  // over [zlo, zhi] in z (wrapping there where the group fills a periodic height).
+  SphereGrid(const Box& box, double zlo, double zhi, double min_width, bool wrap_z) : box_(box) {
     const std::array<double, 3> lo{box.lo[0], box.lo[1], zlo}, hi{box.hi[0], box.hi[1], zhi};
     for (int a = 0; a < 3; ++a) {
       lo_[a] = lo[a];
       n_[a] = std::max(1, static_cast<int>(std::floor((hi[a] - lo[a]) / min_width)));
       width_[a] = (hi[a] - lo[a]) / n_[a];
-      wrap_[a] = a < 2 && box.periodic[a];
+      wrap_[a] = a < 2 ? box.periodic[a] : wrap_z;
     }
     head_.assign(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], -1);
   }
@@ -56,15 +56,16 @@ class SphereGrid {
     int cx[3], cy[3], cz[3];
     const int mx = around(0, axis_cell(0, x), cx), my = around(1, axis_cell(1, y), cy),
               mz = around(2, axis_cell(2, z), cz);
-    const double Lx = box_.length(0), Ly = box_.length(1);
+    const double Lx = box_.length(0), Ly = box_.length(1), Lz = box_.length(2);
     for (int kz = 0; kz < mz; ++kz)
       for (int ky = 0; ky < my; ++ky)
         for (int kx = 0; kx < mx; ++kx)
           for (std::int32_t j = head_[cell(cx[kx], cy[ky], cz[kz])]; j >= 0; j = next_[j]) {
             double dx = x - x_[j], dy = y - y_[j];
-            const double dz = z - z_[j];
+            double dz = z - z_[j];
             if (box_.periodic[0]) dx -= Lx * std::nearbyint(dx / Lx);
             if (box_.periodic[1]) dy -= Ly * std::nearbyint(dy / Ly);
+            if (wrap_[2]) dz -= Lz * std::nearbyint(dz / Lz);
             const double rs = r + r_[j];
             if (dx * dx + dy * dy + dz * dz < rs * rs) return true;
           }
@@ -168,8 +169,8 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
   // 3. Where centres may go: periodic across a whole periodic width, else inside the region.
   std::array<bool, 3> full{};
   for (int a = 0; a < 3; ++a) {
-    full[a] = a < 2 && sc.box.periodic[a] &&
-              std::abs(span[a] - sc.box.length(a)) <= 1e-12 * sc.box.length(a);
+    full[a] =
+        sc.box.periodic[a] && std::abs(span[a] - sc.box.length(a)) <= 1e-12 * sc.box.length(a);
     if (!full[a] && span[a] < d_max)
       fail("max",
            fmt::format("the region is {} m wide along {}, less than the largest diameter {} m",
@@ -185,12 +186,13 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
       others.push_back(j);
       r_other = std::max(r_other, existing.radius[j]);
     }
-  const double zlo = g.lo[2] - r_other, zhi = g.hi[2] + r_other;
+  const double zlo = full[2] ? sc.box.lo[2] : g.lo[2] - r_other;
+  const double zhi = full[2] ? sc.box.hi[2] : g.hi[2] + r_other;
   const double reach = 0.5 * d_max + std::max(0.5 * d_max, r_other);  // largest contact distance
   const double v_grid = sc.box.length(0) * sc.box.length(1) * (zhi - zlo);
   const double n_all = static_cast<double>(diameter.size() + others.size());
-  SphereGrid grid(sc.box, zlo, zhi,
-                  std::max(reach, std::cbrt(v_grid / n_all)));  // ~1 sphere per cell
+  SphereGrid grid(sc.box, zlo, zhi, std::max(reach, std::cbrt(v_grid / n_all)),  // ~1 a cell
+                  full[2]);
   for (std::size_t j : others)
     grid.insert(existing.x[j], existing.y[j], existing.z[j], existing.radius[j]);
 

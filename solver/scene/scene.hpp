@@ -173,6 +173,13 @@ struct DoubleSmoothingSpec {
 //    reaction spreads with.
 enum class PressureCoupling { kInterpolated, kVariational };
 
+// The imposed flow of a column periodic in z (flow.*): U(t) piecewise linear through
+// (times[k], superficial_velocity[k]), held after the last time.
+struct FlowSpec {
+  std::vector<double> times{0.0};
+  std::vector<double> superficial_velocity{0.0};
+};
+
 struct Scene {
   std::string name{scene_key("name").text};
   std::string description;
@@ -201,8 +208,13 @@ struct Scene {
   CheckpointSpec checkpoint;
   WatchdogSpec watchdog;
   InSituSpec insitu;
+  FlowSpec flow;  // read only with box.periodic[2]
 
+  bool periodic_z() const { return box.periodic[2]; }
   double fill_height() const { return fluid.fill_height > 0 ? fluid.fill_height : box.length(2); }
+  // The height of fluid under its own weight (the hydrostatic start, sqrt(2 g H) in c0): 0
+  // in a column periodic in z, whose mean pressure gradient is the flow's body force.
+  double hydrostatic_height() const { return periodic_z() ? 0.0 : fill_height(); }
   double gravity_magnitude() const {
     return std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);
   }

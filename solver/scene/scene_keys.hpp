@@ -42,6 +42,8 @@ inline constexpr SceneKey kSceneKeys[] = {
     key_rows::vector3("domain.size", "m", {0.004, 0.004, 0.006}, above(0),
         "box [Lx, Ly, Lz]: [0, Lx] × [0, Ly] × [0, Lz], periodic in x and y, a wall at z = 0 (§1)")
         .limits("Lx, Ly must also pass the `fluid.spacing` checks"),
+    key_rows::boolean("domain.periodic_z", false,
+        "`true`: periodic in z as well, a column without wall or free surface whose fluid is driven by `flow` (a homogeneous suspension, a bed on a distributor); Lz/dx a whole number"),
     key_rows::vector3("gravity", "m/s²", {0, 0, -9.81}, any_finite(),
         "g of 2.32 and 2.35; |g| enters u_m and √(2 g H), the hydrostatic start uses |g_z|"),
 
@@ -212,6 +214,15 @@ inline constexpr SceneKey kSceneKeys[] = {
         .note("a given `sphere_kernel_scale`; 1 under `auto`").limits("≤ `sphere_kernel_scale`"),
 
     // ---- time, startup, output
+    // ---- flow (domain.periodic_z)
+    key_rows::map("flow", "the imposed flow of a column periodic in z: a uniform body force, the mean pressure gradient, set each step so that the fluid's superficial velocity follows U(t) (`propagator/flow_controller.hpp`)"),
+    key_rows::numbers("flow.times", "s", at_least(0),
+        "times of the schedule, increasing; U is linear between them and held after the last")
+        .note("[0]").limits("as many as `flow.superficial_velocity`; needs `domain.periodic_z`"),
+    key_rows::numbers("flow.superficial_velocity", "m/s", any_finite(),
+        "U(t) along +z at `flow.times`: the fluid's momentum over ρf and the box's volume (0: a homogeneous suspension settling through fluid at rest on the mean)")
+        .note("[0]").limits("needs `domain.periodic_z`"),
+
     key_rows::map("time", "the time steps"),
     key_rows::number("time.end", "s", 0.02, above(0), "simulated time after release"),
     key_rows::number("time.cfl", "–", 0.25, left_open(0, 1),

@@ -134,8 +134,11 @@ void resolve_resolution(Scene& sc, bool given, SceneProblems& problems) {
   double d_max = 0.0;
   for (const SpeciesSpec& s : sc.species) d_max = std::max(d_max, s.d_max());
   std::string why;
+  const double nz = sc.box.length(2) / dx;
   if (std::abs(ny - std::round(ny)) > 1e-6)
     why = fmt::format("{} m does not divide the width {} m", dx, sc.box.length(1));
+  else if (sc.periodic_z() && std::abs(nz - std::round(nz)) > 1e-6)
+    why = fmt::format("{} m does not divide the periodic height {} m", dx, sc.box.length(2));
   else if (std::min(sc.box.length(0), sc.box.length(1)) < support)
     why = fmt::format("the box is narrower than 4.8 smoothing_factor dx = {} m", support);
   else if (sc.fill_height() < 3 * dx)
@@ -167,6 +170,7 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
   read_particles(top, sc, cx);
   read_contact(top, sc, cx);
   read_coupling(top, sc, cx);
+  read_flow(top, sc, cx);
   read_run_control(top, sc, cx);
   read_insitu(top, sc, cx);
   top.finish();
@@ -183,11 +187,13 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
           terminal_speed(sc.drag, s.d_max(), s.density, sc.fluid.density, sc.fluid.viscosity, g);
       u = std::max(u, std::isfinite(v) ? v : stokes_speed(s, sc.fluid, g));
     }
+    for (const double U : sc.flow.superficial_velocity) u = std::max(u, std::abs(U));
     sc.fluid.expected_speed = u;
   }
   if (sc.fluid.resolution != 1.0) resolve_resolution(sc, cx.resolution_given, problems);
   if (sc.fluid.sound_speed <= 0) {  // f max(u_m, sqrt(2 g H)), and the buoyancy bound
-    const double um = std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.fill_height()));
+    const double um =
+        std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.hydrostatic_height()));
     sc.fluid.sound_speed =
         std::max(sc.fluid.sound_speed_factor * std::max(um, 1e-6), buoyancy_sound_speed(sc));
   }
@@ -271,6 +277,7 @@ std::string scene_to_yaml(const Scene& sc) {
   write_particles(e, sc);
   write_contact(e, sc);
   write_coupling(e, sc);
+  write_flow(e, sc);
   write_run_control(e, sc);
   write_insitu(e, sc);
   e << YAML::EndMap;

@@ -41,7 +41,8 @@ inline double neutral_buoyancy_factor(const Scene& sc) {
 
 // The smallest c0 whose compression error on the buoyant weight stays within `share`.
 inline double buoyancy_sound_speed(const Scene& sc, double share = kBuoyancyErrorTarget) {
-  return std::sqrt(sc.gravity_magnitude() * sc.fill_height() * neutral_buoyancy_factor(sc) / share);
+  return std::sqrt(sc.gravity_magnitude() * sc.hydrostatic_height() * neutral_buoyancy_factor(sc) /
+                   share);
 }
 
 inline SoundSpeedReport sound_speed_report(const Scene& sc) {
@@ -50,7 +51,7 @@ inline SoundSpeedReport sound_speed_report(const Scene& sc) {
   if (!(r.c0 > 0.0)) return r;
   r.mach = sc.fluid.expected_speed / r.c0;
   r.flow = r.mach * r.mach;
-  r.hydrostatic = sc.gravity_magnitude() * sc.fill_height() / (r.c0 * r.c0);
+  r.hydrostatic = sc.gravity_magnitude() * sc.hydrostatic_height() / (r.c0 * r.c0);
   r.buoyancy = r.hydrostatic * neutral_buoyancy_factor(sc);
   return r;
 }

@@ -222,3 +222,38 @@ TEST(DidYouMean, EditDistanceAndTheRule) {
   EXPECT_EQ(did_you_mean("Cfl", names), "; did you mean 'cfl'?");
   EXPECT_EQ(did_you_mean("zzz", names), "");
 }
+
+// A column periodic in z (issue 37): the keys of a wall or free surface, a flow without
+// the periodic column, and a schedule whose times go back are each refused, naming the key
+// and what is allowed; the periodic column itself loads.
+TEST(SceneErrorsFlow, APeriodicColumnRefusesWhatNeedsAWallOrSurface) {
+  const std::string periodic = R"(domain: {size: [0.002, 0.002, 0.002], periodic_z: true}
+fluid: {spacing: 2.0e-4}
+species:
+  - {name: glass, diameter: 1.0e-4, density: 2500}
+particles:
+  - {type: random, species: glass, min: [0, 0, 0], max: [0.002, 0.002, 0.002], voidage: 0.9, seed: 1}
+flow: {times: [0, 0.1], superficial_velocity: [0, 1.0e-3]}
+time: {end: 0.01}
+)";
+  EXPECT_TRUE(problems(periodic).empty());
+  EXPECT_TRUE(
+      contains(line_of(problems(periodic, {"fluid.fill_height=0.001"}), "fluid.fill_height"),
+               "periodic in z"));
+  EXPECT_TRUE(contains(line_of(problems(periodic, {"fluid.wall_layers=3"}), "fluid.wall_layers"),
+                       "no wall"));
+  EXPECT_TRUE(contains(line_of(problems(periodic, {"coupling.pressure_coupling=variational",
+                                                   "coupling.hydrostatic_split=true"}),
+                               "coupling.hydrostatic_split"),
+                       "free surface"));
+  EXPECT_TRUE(contains(line_of(problems(periodic, {"flow.times=[0.1, 0]"}), "flow.times"),
+                       "must increase"));
+  EXPECT_TRUE(contains(
+      line_of(problems(periodic, {"flow.times=[0, 0.1, 0.2]"}), "flow.superficial_velocity"),
+      "one value per entry"));
+  EXPECT_TRUE(
+      contains(line_of(problems(periodic, {"domain.size=[0.002, 0.002, 0.0021]"}), "fluid.spacing"),
+               "whole number"));
+  EXPECT_TRUE(contains(line_of(problems(periodic, {"domain.periodic_z=false"}), "flow"),
+                       "periodic_z: true"));
+}

@@ -65,6 +65,13 @@ particles:
   - {type: lattice, species: [a, b], fractions: [0.5, 0.5], min: [0, 0, 0], max: [0.004, 0.004, 0.002], voidage: 0.9, seed: 1}
   - {type: random, species: [u, n, l], fractions: [0.4, 0.3, 0.3], min: [0, 0, 0.003], max: [0.004, 0.004, 0.004], voidage: 0.97}
 )",
+    R"(domain: {size: [0.004, 0.004, 0.004], periodic_z: true}
+species:
+  - {name: glass, diameter: 1.0e-4, density: 2500}
+particles:
+  - {type: random, species: glass, min: [0, 0, 0], max: [0.004, 0.004, 0.004], voidage: 0.9, seed: 1}
+flow: {times: [0, 0.1], superficial_velocity: [0, 1.0e-4]}
+)",
 };
 
 // A key path with list indices as N ("species.N.diameter").

@@ -67,6 +67,22 @@ inline double di_felice_block_slip(double d, double rho_p, double rho_f, double 
 
 // Beetstra, van der Hoef & Kuipers (2007) monodisperse drag factor (thesis 2.85-2.86),
 // F = f_mono 3 pi mu d u_s, at voidage eps and Reynolds number Re = rho_f d |u_s| / mu.
+// Richardson & Zaki (1954): hindered settling and liquid fluidisation u = u_t eps^n with
+// their exponent for a column much wider than the spheres (d/D -> 0),
+//   n = 4.65 (Re_t < 0.2), 4.4 Re_t^-0.03 (< 1), 4.4 Re_t^-0.1 (< 500), 2.4 above,
+// and Garside & Al-Dibouni's (1977), (5.1 - n)/(n - 2.7) = 0.1 Re_t^0.9. The two bound the
+// experiments' band; Re_t = rho_f u_t d / mu of one sphere at its terminal speed u_t.
+inline double richardson_zaki_n(double re_t) {
+  if (re_t < 0.2) return 4.65;
+  if (re_t < 1.0) return 4.4 * std::pow(re_t, -0.03);
+  if (re_t < 500.0) return 4.4 * std::pow(re_t, -0.1);
+  return 2.4;
+}
+inline double garside_al_dibouni_n(double re_t) {
+  const double x = 0.1 * std::pow(re_t, 0.9);
+  return (5.1 + 2.7 * x) / (1.0 + x);
+}
+
 inline double beetstra_f_mono(double eps, double re) {
   const double phi = 1.0 - eps;
   const double stokes = 10.0 * phi / (eps * eps) + eps * eps * (1.0 + 1.5 * std::sqrt(phi));

@@ -62,9 +62,13 @@ void read_coupling(MapReader& top, Scene& sc, ReadContext& cx) {
   // default: on wherever it applies (the variational coupling under gravity along -z)
   const bool along_minus_z = sc.gravity[0] == 0.0 && sc.gravity[1] == 0.0 && sc.gravity[2] < 0.0;
   const bool split_applies =
-      sc.pressure_coupling == PressureCoupling::kVariational && along_minus_z;
+      sc.pressure_coupling == PressureCoupling::kVariational && along_minus_z && !sc.periodic_z();
   sc.hydrostatic_split = r.boolean("hydrostatic_split", split_applies);
-  if (pc && sc.hydrostatic_split && sc.pressure_coupling != PressureCoupling::kVariational)
+  if (sc.hydrostatic_split && sc.periodic_z())  // no free surface to hang P_h from
+    r.fail(r.key("hydrostatic_split"),
+           "true needs a free surface; a column periodic in z (domain.periodic_z) has none, and "
+           "its mean pressure gradient is the flow's body force");
+  else if (pc && sc.hydrostatic_split && sc.pressure_coupling != PressureCoupling::kVariational)
     r.fail(r.key("hydrostatic_split"), "true needs pressure_coupling: variational");
   else if (sc.hydrostatic_split && !along_minus_z)
     r.fail(r.key("hydrostatic_split"),

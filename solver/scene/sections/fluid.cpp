@@ -17,6 +17,7 @@ void read_fluid(MapReader& top, Scene& sc, ReadContext& cx) {
   f.spacing = r.number("spacing");
   f.smoothing_factor = r.number("smoothing_factor");
   const bool lattice_ok = r.clean();  // spacing and smoothing_factor
+  const bool fill_given = r.has("fill_height"), walls_given = r.has("wall_layers");
   f.fill_height = r.number_within("fill_height", scene_default("fluid.fill_height"), 0.0,
                                   cx.box_ok ? sc.box.length(2) : kInf);
   f.expected_speed = r.number("expected_speed");
@@ -31,7 +32,17 @@ void read_fluid(MapReader& top, Scene& sc, ReadContext& cx) {
   f.wall_layers = r.integer("wall_layers", std::max(3, min_layers), min_layers);
   const bool fill_ok = r.clean();
   r.finish();
-  for (int d = 0; d < 2 && f.enabled && cx.box_ok && lattice_ok; ++d) {  // no fluid: nothing to fit
+  if (sc.periodic_z()) {  // no wall, no free surface: the keys of either do not apply
+    for (const auto& [given, key] :
+         {std::pair{fill_given, "fluid.fill_height"}, std::pair{walls_given, "fluid.wall_layers"}})
+      if (given)
+        r.fail(key,
+               "a column periodic in z (domain.periodic_z: true) has no wall and no free "
+               "surface; leave this key out");
+  }
+  const int periodic_axes = sc.periodic_z() ? 3 : 2;
+  for (int d = 0; d < periodic_axes && f.enabled && cx.box_ok && lattice_ok;
+       ++d) {  // no fluid: nothing to fit
     const double halo = kernel_reach_with_margin(f.lattice_h());
     if (sc.box.length(d) < 2.0 * halo) {
       r.fail("domain.size", fmt::format("the periodic width {} m must be >= 4.8 smoothing_factor "
@@ -58,14 +69,14 @@ void write_fluid(YAML::Emitter& e, const Scene& sc) {
     << f.viscosity;
   e << YAML::Key << "spacing" << YAML::Value << f.spacing << YAML::Key << "smoothing_factor"
     << YAML::Value << f.smoothing_factor;
-  e << YAML::Key << "fill_height" << YAML::Value << f.fill_height << YAML::Key << "expected_speed"
-    << YAML::Value << f.expected_speed;
+  if (!sc.periodic_z()) e << YAML::Key << "fill_height" << YAML::Value << f.fill_height;
+  e << YAML::Key << "expected_speed" << YAML::Value << f.expected_speed;
   e << YAML::Key << "sound_speed" << YAML::Value << f.sound_speed << YAML::Key
     << "sound_speed_factor" << YAML::Value << f.sound_speed_factor << YAML::Key << "resolution"
     << YAML::Value << f.resolution << YAML::Key << "alpha_artificial" << YAML::Value
     << f.alpha_artificial << YAML::Key << "density_diffusion" << YAML::Value << f.density_diffusion;
-  e << YAML::Key << "gamma" << YAML::Value << f.gamma << YAML::Key << "wall_layers" << YAML::Value
-    << f.wall_layers;
+  e << YAML::Key << "gamma" << YAML::Value << f.gamma;
+  if (!sc.periodic_z()) e << YAML::Key << "wall_layers" << YAML::Value << f.wall_layers;
   e << YAML::Key << "enabled" << YAML::Value << f.enabled;
   e << YAML::EndMap;
 }

@@ -45,6 +45,9 @@ void write_contact(YAML::Emitter& e, const Scene& sc);
 // drag and coupling
 void read_coupling(MapReader& top, Scene& sc, ReadContext& cx);
 void write_coupling(YAML::Emitter& e, const Scene& sc);
+// the imposed flow of a column periodic in z
+void read_flow(MapReader& top, Scene& sc, ReadContext& cx);
+void write_flow(YAML::Emitter& e, const Scene& sc);
 // time, startup, output, checkpoint, watchdog
 void read_run_control(MapReader& top, Scene& sc, ReadContext& cx);
 void write_run_control(YAML::Emitter& e, const Scene& sc);

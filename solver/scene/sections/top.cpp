@@ -16,7 +16,7 @@ void read_top(MapReader& top, Scene& sc, ReadContext& cx) {
   cx.box_ok = r.clean();
   sc.box.lo = {0, 0, 0};
   sc.box.hi = cx.box_ok ? size : scene_key("domain.size").vector;
-  sc.box.periodic = {true, true, false};
+  sc.box.periodic = {true, true, r.boolean("periodic_z")};
   r.finish();
   sc.gravity = top.vec3("gravity");
 }
@@ -27,6 +27,7 @@ void write_top(YAML::Emitter& e, const Scene& sc) {
   e << YAML::Key << "fidelity" << YAML::Value << sc.fidelity;
   e << YAML::Key << "domain" << YAML::Value << YAML::BeginMap << YAML::Key << "size" << YAML::Value;
   emit_vec3(e, sc.box.hi);
+  e << YAML::Key << "periodic_z" << YAML::Value << sc.periodic_z();
   e << YAML::EndMap;
   e << YAML::Key << "gravity" << YAML::Value;
   emit_vec3(e, sc.gravity);
