@@ -49,7 +49,14 @@ Diagnostics diagnostics(const Simulation& sim) {
   d.com_z.assign(ns, 0.0);
   d.count.assign(ns, 0);
   std::vector<double> mass(ns, 0.0);
+  const double bed_floor = sim.params().dem.walls.bottom;  // a bed on the distributor
+  const bool bed = scene.flow.distributor && scene.periodic_z();
+  double bed_moment = 0.0, bed_volume = 0.0;  // sum V_j (z_j - floor), sum V_j
   for (std::size_t j = 0; j < s.n_owned; ++j) {
+    if (bed) {
+      bed_moment += s.volume(j) * (s.z[j] - bed_floor);
+      bed_volume += s.volume(j);
+    }
     const int sp = s.species[j];
     d.kinetic_energy_solid +=
         0.5 * s.mass[j] * (s.vx[j] * s.vx[j] + s.vy[j] * s.vy[j] + s.vz[j] * s.vz[j]);
@@ -68,7 +75,11 @@ Diagnostics diagnostics(const Simulation& sim) {
       for (double v : {d.vz_mean[sp], d.slip_z_mean[sp], d.com_z[sp], mass[sp],
                        static_cast<double>(d.count[sp])})
         sums.push_back(v);
+    sums.push_back(bed_moment);
+    sums.push_back(bed_volume);
     comm.sum(sums);
+    bed_moment = sums[sums.size() - 2];
+    bed_volume = sums.back();
     d.fluid_mass = sums[0];
     d.kinetic_energy_fluid = sums[1];
     d.kinetic_energy_solid = sums[2];
@@ -87,6 +98,8 @@ Diagnostics diagnostics(const Simulation& sim) {
     d.max_overlap_over_d = maxima[0];
     d.max_density_error = maxima[1];
   }
+  // the height of a uniform bed with the spheres' mean height: twice it
+  if (bed_volume > 0.0) d.bed_height = 2.0 * bed_moment / bed_volume;
   for (std::size_t sp = 0; sp < ns; ++sp) {
     if (d.count[sp] == 0) continue;
     d.vz_mean[sp] /= d.count[sp];

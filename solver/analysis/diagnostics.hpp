@@ -22,8 +22,9 @@ struct Diagnostics {
   double fluid_load_base =
       0;  // analysis/pore_pressure.hpp: the fluid's excess load on the wall, same unit
   double superficial_velocity = 0, pressure_drop = 0;  // propagator/flow_controller.hpp
-  std::vector<double> vz_mean, slip_z_mean, com_z;     // per species
-  std::vector<std::size_t> count;                      // spheres per species
+  double bed_height = 0;  // twice the spheres' volume-weighted mean height over the distributor
+  std::vector<double> vz_mean, slip_z_mean, com_z;  // per species
+  std::vector<std::size_t> count;                   // spheres per species
 };
 
 Diagnostics diagnostics(const Simulation& sim);

@@ -79,7 +79,7 @@ void write_sediment_output(const Simulation& sim, const std::string& out_dir) {
     d_hi *= 1.05;
   }
   const ContactNetwork mine =
-      contact_network(s, sim.contact_list(), sc.contact.normal, sim.params().dem.wall_z);
+      contact_network(s, sim.contact_list(), sc.contact.normal, sim.params().dem.walls.bottom);
   if (!comm.parallel()) {
     write_size_thirds_csv(size_thirds(s, d_lo, d_hi, 10), (dir / "size_thirds.csv").string());
     write_contact_network_csv(mine, (dir / "contact_network.csv").string());

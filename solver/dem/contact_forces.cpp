@@ -8,19 +8,19 @@ namespace sphdem {
 
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
                             const LinearSpringDashpot& law, const HaloImages& images,
-                            double wall_z) {
+                            SphereWalls walls) {
   const long n = static_cast<long>(s.n_owned);
   const double bf = law.beta_factor();
   // A bed and a dilute suspension above it differ in contacts per sphere: contiguous
   // shares of equal cost (domain/row_partition.hpp), as the DEM sub-step's force pass.
 #pragma omp parallel if (n > kMinParallelSpheres)
   for (auto [i, end] = thread_rows(list.offset, n, kContactRowCost); i < end; ++i)
-    store_contact_row<NormalContact>(s, i, normal_contact_row(s, list, law, bf, images, wall_z, i));
+    store_contact_row<NormalContact>(s, i, normal_contact_row(s, list, law, bf, images, walls, i));
 }
 
 template <class Model>
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, const Model& model,
-                            ContactHistory& history, const HaloImages& images, double wall_z,
+                            ContactHistory& history, const HaloImages& images, SphereWalls walls,
                             double dt) {
   static_assert(Model::kHistory, "the normal-only law has its own pass");
   history.require_aligned(list, s.n_owned);
@@ -29,25 +29,25 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, c
 #pragma omp parallel if (n > kMinParallelSpheres)  // as the normal-only pass
   for (auto [i, end] = thread_rows(list.offset, n, kContactRowCost); i < end; ++i)
     store_contact_row<Model>(
-        s, i, history_contact_row(s, list, model, bf, history, images, wall_z, dt, i));
+        s, i, history_contact_row(s, list, model, bf, history, images, walls, dt, i));
 }
 
 template void compute_contact_forces(DemParticles&, const ContactNeighbourList&,
                                      const FrictionalContact&, ContactHistory&, const HaloImages&,
-                                     double, double);
+                                     SphereWalls, double);
 template void compute_contact_forces(DemParticles&, const ContactNeighbourList&,
                                      const FrictionalRollingContact&, ContactHistory&,
-                                     const HaloImages&, double, double);
+                                     const HaloImages&, SphereWalls, double);
 
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
                             const ContactLaw& law, ContactHistory& history,
-                            const HaloImages& images, double wall_z, double dt) {
+                            const HaloImages& images, SphereWalls walls, double dt) {
   std::visit(
       [&](const auto& model) {
         if constexpr (std::decay_t<decltype(model)>::kHistory)
-          compute_contact_forces(s, list, model, history, images, wall_z, dt);
+          compute_contact_forces(s, list, model, history, images, walls, dt);
         else
-          compute_contact_forces(s, list, model.normal, images, wall_z);
+          compute_contact_forces(s, list, model.normal, images, walls);
       },
       law);
 }

@@ -13,12 +13,13 @@
 namespace sphdem {
 
 // Contact force (cx,cy,cz) on every owned sphere from the linear spring-dashpot
-// (2.36) with other spheres and with the flat bottom wall at z = wall_z.
-// Records each sphere's largest overlap in overlap_max. Halo neighbours are read through
-// their owned source (`images`), so the passes between two list builds need no halo fill.
+// (2.36) with other spheres and with the flat bottom wall at z = walls.bottom and the top plane
+// (dem/sphere_walls.hpp). Records each sphere's largest overlap in overlap_max. Halo neighbours are
+// read through their owned source (`images`), so the passes between two list builds need no halo
+// fill.
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
                             const LinearSpringDashpot& law, const HaloImages& images,
-                            double wall_z);
+                            SphereWalls walls);
 
 // Contact force and torque with tangential and rolling parts (a registered ContactModel
 // with kHistory, contact_registry.hpp) on every owned sphere: writes (cx,cy,cz),
@@ -34,13 +35,13 @@ void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
 // `images` describes the halo copies among the neighbours (empty if there are none).
 template <class Model>
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list, const Model& model,
-                            ContactHistory& history, const HaloImages& images, double wall_z,
+                            ContactHistory& history, const HaloImages& images, SphereWalls walls,
                             double dt);
 
 // Any registered law; the normal-only one goes to the history-free pass above (the
 // history, the images and dt are then unused, and the torques left untouched).
 void compute_contact_forces(DemParticles& s, const ContactNeighbourList& list,
                             const ContactLaw& law, ContactHistory& history,
-                            const HaloImages& images, double wall_z, double dt);
+                            const HaloImages& images, SphereWalls walls, double dt);
 
 }  // namespace sphdem

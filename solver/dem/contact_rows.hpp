@@ -15,6 +15,7 @@
 #include "dem/contact_list.hpp"
 #include "dem/contact_model.hpp"
 #include "dem/dem_particles.hpp"
+#include "dem/sphere_walls.hpp"
 #include "domain/periodic_halo.hpp"
 
 namespace sphdem {
@@ -28,11 +29,22 @@ struct ContactRow {
   double overlap = 0;             // largest overlap
 };
 
-// Linear spring-dashpot (2.36) with the other spheres and the flat bottom wall at
-// z = wall_z (normal +z); bf = law.beta_factor().
+// The top plane's normal force on sphere i (frictionless, normal -z), into row.
+inline void add_top_plane(const DemParticles& s, const LinearSpringDashpot& law, double bf,
+                          double top_z, std::size_t i, ContactRow& row) {
+  const double dt = s.radius[i] - (top_z - s.z[i]);
+  if (dt > 0.0) {
+    row.fz -= law.normal_force(dt, s.vz[i], law.beta_for(s.mass[i], bf));
+    row.overlap = std::max(row.overlap, dt);
+  }
+}
+
+// Linear spring-dashpot (2.36) with the other spheres, the flat bottom wall at
+// z = walls.bottom (normal +z) and the top plane; bf = law.beta_factor().
 inline ContactRow normal_contact_row(const DemParticles& s, const ContactNeighbourList& list,
                                      const LinearSpringDashpot& law, double bf,
-                                     const HaloImages& images, double wall_z, std::size_t i) {
+                                     const HaloImages& images, SphereWalls walls, std::size_t i) {
+  const double wall_z = walls.bottom;
   ContactRow row;
   const double ri = s.radius[i], mi = s.mass[i];
   for (std::uint32_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
@@ -60,6 +72,7 @@ inline ContactRow normal_contact_row(const DemParticles& s, const ContactNeighbo
     row.fz += law.normal_force(dw, -s.vz[i], law.beta_for(mi, bf));
     row.overlap = std::max(row.overlap, dw);
   }
+  add_top_plane(s, law, bf, walls.top, i, row);
   return row;
 }
 
@@ -69,8 +82,9 @@ inline ContactRow normal_contact_row(const DemParticles& s, const ContactNeighbo
 template <class Model>
 inline ContactRow history_contact_row(const DemParticles& s, const ContactNeighbourList& list,
                                       const Model& model, double bf, ContactHistory& history,
-                                      const HaloImages& images, double wall_z, double dt,
+                                      const HaloImages& images, SphereWalls walls, double dt,
                                       std::size_t i) {
+  const double wall_z = walls.bottom;
   constexpr bool kRolling = decltype(model.rolling)::kEnabled;
   const LinearSpringDashpot& law = model.normal;
   const auto& tangential = model.tangential;
@@ -162,6 +176,7 @@ inline ContactRow history_contact_row(const DemParticles& s, const ContactNeighb
   } else if (sw.active()) {
     sw = ContactState{};
   }
+  add_top_plane(s, law, bf, walls.top, i, row);
   return row;
 }
 
@@ -170,11 +185,12 @@ inline ContactRow history_contact_row(const DemParticles& s, const ContactNeighb
 template <class Model>
 inline ContactRow contact_row(const DemParticles& s, const ContactNeighbourList& list,
                               const Model& model, double bf, ContactHistory& history,
-                              const HaloImages& images, double wall_z, double dt, std::size_t i) {
+                              const HaloImages& images, SphereWalls walls, double dt,
+                              std::size_t i) {
   if constexpr (Model::kHistory)
-    return history_contact_row(s, list, model, bf, history, images, wall_z, dt, i);
+    return history_contact_row(s, list, model, bf, history, images, walls, dt, i);
   else
-    return normal_contact_row(s, list, model.normal, bf, images, wall_z, i);
+    return normal_contact_row(s, list, model.normal, bf, images, walls, i);
 }
 
 // Stores what a row gives besides its force: with a history model the torque

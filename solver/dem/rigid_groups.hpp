@@ -22,6 +22,8 @@ class RigidGroups {
     m_.assign(n_, 0);
   }
   int count() const { return n_; }
+  // Groups that never move (a fixed bed): their sums read as zero, so every share is zero.
+  void set_fixed(const std::vector<char>& fixed) { fixed_ = fixed; }
 
   // Sums value(j, fx, fy, fz) over the owned spheres of each group, and their masses.
   template <class Value>
@@ -40,7 +42,10 @@ class RigidGroups {
       fz_[gr] += fz;
       m_[gr] += s.mass[j];
     }
-    if (!comm_.parallel()) return;
+    if (!comm_.parallel()) {
+      hold_fixed();
+      return;
+    }
     std::vector<double> all(4 * n_);
     for (int g = 0; g < n_; ++g) {
       all[4 * g] = fx_[g], all[4 * g + 1] = fy_[g], all[4 * g + 2] = fz_[g];
@@ -51,6 +56,7 @@ class RigidGroups {
       fx_[g] = all[4 * g], fy_[g] = all[4 * g + 1], fz_[g] = all[4 * g + 2];
       m_[g] = all[4 * g + 3];
     }
+    hold_fixed();
   }
   // Adds (add) or sets each member's (x, y, z) to its group's last sum over its mass.
   void share(const DemParticles& s, std::vector<double>& x, std::vector<double>& y,
@@ -71,8 +77,13 @@ class RigidGroups {
   }
 
  private:
+  void hold_fixed() {
+    for (int g = 0; g < n_ && g < static_cast<int>(fixed_.size()); ++g)
+      if (fixed_[g]) fx_[g] = fy_[g] = fz_[g] = 0.0;
+  }
   RankComm comm_;
   int n_ = 0;
+  std::vector<char> fixed_;  // per group
   std::vector<double> fx_, fy_, fz_, m_;
 };
 

@@ -21,7 +21,9 @@ DemSubstepper::DemSubstepper(const Box& box, const DemStepParams& params, DemPar
       s_(std::move(spheres)),
       lists_(box, params.skin, params.rotation, comm),
       groups_(s_, comm),
-      any_spheres_(comm.sum(s_.n_owned) > 0) {}
+      any_spheres_(comm.sum(s_.n_owned) > 0) {
+  groups_.set_fixed(p_.fixed_groups);
+}
 
 void DemSubstepper::set_decomposition(const Decomposition* d) {
   lists_.set_decomposition(d);
@@ -120,7 +122,7 @@ double DemSubstepper::force_rows(const Contact& contact, bool accumulate_mean, d
                             fluid_forces(p_.drag, s, fluid, block, block_end, window, drag_c, isa));
       for (std::size_t j = block; j < block_end; ++j) {
         const ContactRow c =
-            contact_row(s, contacts, contact, bf, history, images, p_.wall_z, dt_springs, j);
+            contact_row(s, contacts, contact, bf, history, images, p_.walls, dt_springs, j);
         if constexpr (Contact::kHistory) {
           if (advance.correct) {  // the spin as the velocity (rotation.hpp), tau_old = t
             const double I = s.inertia(j), cc = 0.5 * h / I;

@@ -39,7 +39,8 @@ bool MultirateHalfStep::take(const DemStepParams& p, DemParticles& s, SphereList
   const HaloImages images = lists.halo().images();
   near_.clear();
   for (long i = 0; i < n; ++i) {
-    bool near = s.z[i] - s.radius[i] - p.wall_z < margin;  // the bottom wall
+    bool near = s.z[i] - s.radius[i] - p.walls.bottom < margin ||  // the bottom wall
+                p.walls.top - s.z[i] - s.radius[i] < margin;       // the top plane
     for (std::uint32_t k = contacts.offset[i]; !near && k < contacts.offset[i + 1]; ++k) {
       double dx, dy, dz;
       const std::size_t j = owned_image(images, contacts.neighbour[k], s.x[i], s.y[i], s.z[i], s.x,
@@ -205,7 +206,7 @@ double MultirateHalfStep::near_substeps(const Contact& contact, const DemStepPar
       const std::size_t j = near[q];
       rate_max = std::max(
           rate_max, fluid_forces(p.drag, s, p.fluid, j, j + 1, window, drag_c, PairIsa::kBaseline));
-      const ContactRow c = contact_row(s, contacts, contact, bf, history, images, p.wall_z, h, j);
+      const ContactRow c = contact_row(s, contacts, contact, bf, history, images, p.walls, h, j);
       store_torque_and_overlap<Contact>(s, j, c);
       const double inv_m = 1.0 / s.mass[j];
       const double vm = mean_gradient_share(s.radius[j], inv_m);

@@ -162,8 +162,31 @@ void Simulation::build_initial_state() {
     fluid_.rho[a] = p.eos.density(P, fluid_.eps[a]);
     fluid_.mass[a] = fluid_.rho[a] * dx3;
   }
+  if (flow_.on()) start_balanced();
   refresh();
   next_dt();
+}
+
+// An imposed flow starts with G at the static balance of the box, G V_box = -(M_f + M_s) g
+// over the fluid and the spheres that can move, so that the first step does not drop the
+// column by g dt (the controller would give it back at once, the spheres' share a step late).
+void Simulation::start_balanced() {
+  std::vector<double> m{0.0};
+  for (std::size_t a = 0; a < fluid_.n_owned; ++a)
+    if (fluid_.kind[a] == kFluid) m[0] += fluid_.mass[a];
+  const DemParticles& s = dem_.spheres();
+  const std::vector<char>& fixed = params_.dem.fixed_groups;
+  for (std::size_t j = 0; j < s.n_owned; ++j) {
+    const int g = s.rigid_group[j];
+    if (g < 0 || g >= static_cast<int>(fixed.size()) || !fixed[g]) m[0] += s.mass[j];
+  }
+  comm_.sum(m);
+  const Box& box = params_.box;
+  const double volume = box.length(0) * box.length(1) * box.length(2);
+  std::array<double, 3> G{};
+  for (int k = 0; k < 3; ++k) G[k] = -params_.gravity[k] * m[0] / volume;
+  flow_.set_pressure_gradient(G);
+  dem_.set_mean_pressure_gradient(G);
 }
 
 // Every list anew: the fluid's halo and cells at 2 h_max + skin, its half pair list at each

@@ -152,6 +152,7 @@ class Simulation {
   double fluid_cutoff() const;
   void next_dt();
   void control_flow(double t, double dt, bool hold_spheres);
+  void start_balanced();
 
   Scene scene_;
   RankComm comm_;

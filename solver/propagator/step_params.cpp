@@ -68,7 +68,13 @@ StepParams compile_step_params(const Scene& scene) {
   d.rotation = contact_law_has_history(d.law);
   d.skin = scene.contact.skin;
   d.gravity = scene.gravity;
-  if (scene.periodic_z()) d.wall_z = -std::numeric_limits<double>::infinity();
+  for (const ParticleGroupSpec& g : scene.particles)
+    if (g.rigid) d.fixed_groups.push_back(g.fixed ? 1 : 0);
+  if (scene.periodic_z()) {
+    const double none = std::numeric_limits<double>::infinity();
+    d.walls = SphereWalls(scene.flow.distributor ? scene.box.lo[2] : -none,
+                          scene.flow.top_plane > 0.0 ? scene.flow.top_plane : none);
+  }
   d.fluid_force = scene.fluid.enabled;
   d.drag = scene.drag;
   d.fluid = drag::Fluid{fs.density, fs.viscosity};

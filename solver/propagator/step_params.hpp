@@ -7,6 +7,7 @@
 
 #include "coupling/drag_law_table.hpp"
 #include "dem/contact_registry.hpp"
+#include "dem/sphere_walls.hpp"
 #include "domain/box.hpp"
 #include "scene/scene.hpp"
 #include "sph/density_diffusion.hpp"
@@ -54,12 +55,14 @@ struct DemStepParams {
   // Stokes time): a sediment's drag is ~10 times Stokes'.
   double drag_time_fraction = 0.1;
   std::array<double, 3> gravity{};
-  // The spheres' flat bottom wall (normal +z); -infinity: none (a column periodic in z).
-  double wall_z = 0.0;
+  // The spheres' bottom wall and top plane (a column periodic in z: the distributor or
+  // none, and the plane that holds what the flow carries up; dem/sphere_walls.hpp).
+  SphereWalls walls;
   // The mean pressure gradient G (Pa/m) of an imposed flow, on each sphere as G V_j
   // (propagator/flow_controller.hpp); set each step.
   std::array<double, 3> mean_pressure_gradient{0.0, 0.0, 0.0};
-  bool fluid_force = true;  // false: dry DEM, no fluid and so no fluid force
+  std::vector<char> fixed_groups;  // per rigid group, in the scene's order: never moves
+  bool fluid_force = true;         // false: dry DEM, no fluid and so no fluid force
   drag::DragLaw drag;
   drag::Fluid fluid;
   bool variational = false;  // the pressure force is switched per evaluation, not in fm

@@ -67,6 +67,11 @@ const std::vector<LogColumn>& log_columns() {
        "mean pressure gradient the flow controller sets (0 elsewhere): the bed's buoyant weight "
        "per area once it is fluidised",
        false, [](std::string& r, D d, S) { put(r, "{:.9g}", d.pressure_drop); }},
+      {"bed_height", "m",
+       "the height of a bed on `flow.distributor`: twice the spheres' volume-weighted mean "
+       "height above it, the height of a uniform bed that holds them (0 without a distributor); "
+       "its voidage 1 − Σ V_j / (A bed_height)",
+       false, [](std::string& r, D d, S) { put(r, "{:.9g}", d.bed_height); }},
       {"vz_mean", "m/s", "mean vertical velocity of the spheres of the species", true,
        [](std::string& r, D d, S s) { put(r, "{:.17g}", d.vz_mean[s]); }},
       {"slip_z_mean", "m/s", "mean superficial slip ε_i (u_f,z − v_z) (2.74) of the species", true,

@@ -25,8 +25,15 @@ BlockLattice block_lattice(const Scene& sc, const ParticleGroupSpec& g, double d
     L.spacing[k] = full ? span / L.count[k] : a;
   }
   L.spacing[2] = V / ((1.0 - g.voidage) * L.spacing[0] * L.spacing[1]);
+  const double span_z = g.hi[2] - g.lo[2];
+  if (sc.box.periodic[2] && std::abs(span_z - sc.box.length(2)) < 1e-12 * sc.box.length(2)) {
+    // across a periodic height: whole cells (fcc: an even number of layers), so the
+    // lattice closes on itself; the voidage follows from the spacings (L.voidage)
+    const int cells = std::max(1, static_cast<int>(std::lround(span_z / L.spacing[2])));
+    L.spacing[2] = span_z / cells;
+  }
   const double dz = g.fcc ? 0.5 * L.spacing[2] : L.spacing[2];  // between layers
-  L.count[2] = static_cast<int>(std::floor((g.hi[2] - g.lo[2]) / dz + 1e-9));
+  L.count[2] = static_cast<int>(std::floor(span_z / dz + 1e-9));
   for (int k = 0; k < 3; ++k) {
     const double span = g.hi[k] - g.lo[k], step = k == 2 ? dz : L.spacing[k];
     L.origin[k] = g.lo[k] + 0.5 * (span - L.count[k] * step) + 0.5 * step;

@@ -78,6 +78,7 @@ struct ParticleGroupSpec {
   std::int64_t velocity_seed =
       static_cast<std::int64_t>(scene_default("particles.N.velocity_seed"));
   bool rigid = false;  // constant-porosity block: moves rigidly (thesis §4.5)
+  bool fixed = false;  // never moves (a fixed bed); implies rigid
 };
 
 struct ContactSpec {
@@ -178,6 +179,8 @@ enum class PressureCoupling { kInterpolated, kVariational };
 struct FlowSpec {
   std::vector<double> times{0.0};
   std::vector<double> superficial_velocity{0.0};
+  bool distributor = false;  // the spheres' bottom wall at z = 0
+  double top_plane = 0;      // height of the plane holding what the flow lifts (0: none)
 };
 
 struct Scene {

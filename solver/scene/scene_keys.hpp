@@ -132,6 +132,8 @@ inline constexpr SceneKey kSceneKeys[] = {
     key_rows::whole64("particles.N.velocity_seed", 1, "seed of the jitter"),
     key_rows::boolean("particles.N.rigid", false,
         "a constant-porosity block: the group moves rigidly, sharing the total force (thesis §4.5)"),
+    key_rows::boolean("particles.N.fixed", false,
+        "the group never moves: a fixed bed the fluid flows through (its spheres still take the fluid's forces, which it returns; implies `rigid`)"),
     key_rows::vector3("particles.N.position", "m", {0, 0, 0}, any_finite(), "centre of the sphere")
         .when("type=single").note("the box's centre").limits("inside the box, z ≥ d/2"),
     key_rows::vector3("particles.N.min", "m", {0, 0, 0}, any_finite(), "low corner of the region")
@@ -222,6 +224,11 @@ inline constexpr SceneKey kSceneKeys[] = {
     key_rows::numbers("flow.superficial_velocity", "m/s", any_finite(),
         "U(t) along +z at `flow.times`: the fluid's momentum over ρf and the box's volume (0: a homogeneous suspension settling through fluid at rest on the mean)")
         .note("[0]").limits("needs `domain.periodic_z`"),
+    key_rows::boolean("flow.distributor", false,
+        "`true`: a plane at z = 0 that stops the spheres (their bottom wall, with `contact`'s law) and lets the fluid through: a bed rests on it"),
+    key_rows::number("flow.top_plane", "m", 0, at_least(0),
+        "height of a frictionless plane that holds the spheres the flow carries up (the fluid passes it); 0: none")
+        .limits("above every group, at most Lz − the largest diameter (no contact across the periodic face); needed where U passes a species' terminal speed"),
 
     key_rows::map("time", "the time steps"),
     key_rows::number("time.end", "s", 0.02, above(0), "simulated time after release"),

@@ -118,7 +118,11 @@ void read_particles(MapReader& top, Scene& sc, ReadContext& cx) {
     g.velocity = r.vec3("velocity");
     g.velocity_jitter = r.number("velocity_jitter");
     g.velocity_seed = r.whole64("velocity_seed");
-    g.rigid = r.boolean("rigid");
+    g.fixed = r.boolean("fixed");
+    if (g.fixed && (g.velocity != std::array<double, 3>{0, 0, 0} || g.velocity_jitter > 0))
+      r.fail(r.key("fixed"),
+             "a fixed group never moves: its velocity and velocity_jitter must be 0");
+    g.rigid = r.boolean("rigid") || g.fixed;
     if (g.kind == ParticleGroupSpec::Kind::kLattice)
       g.fcc = r.choice("lattice") == std::optional<std::string>("fcc");
     if (g.kind == ParticleGroupSpec::Kind::kSingle) {
@@ -196,7 +200,8 @@ void write_particles(YAML::Emitter& e, const Scene& sc) {
     emit_vec3(e, g.velocity);
     e << YAML::Key << "velocity_jitter" << YAML::Value << g.velocity_jitter << YAML::Key
       << "velocity_seed" << YAML::Value << g.velocity_seed;
-    e << YAML::Key << "rigid" << YAML::Value << g.rigid << YAML::EndMap;
+    e << YAML::Key << "rigid" << YAML::Value << g.rigid << YAML::Key << "fixed" << YAML::Value
+      << g.fixed << YAML::EndMap;
   }
   e << YAML::EndSeq;
 }
