@@ -215,9 +215,15 @@ struct Scene {
 
   bool periodic_z() const { return box.periodic[2]; }
   double fill_height() const { return fluid.fill_height > 0 ? fluid.fill_height : box.length(2); }
-  // The height of fluid under its own weight (the hydrostatic start, sqrt(2 g H) in c0): 0
-  // in a column periodic in z, whose mean pressure gradient is the flow's body force.
-  double hydrostatic_height() const { return periodic_z() ? 0.0 : fill_height(); }
+  // Resolved by the loader in a column periodic in z with a distributor: the bed's buoyant
+  // weight per area as a height of fluid, sum_groups (1 - eps_g) V_g (rho_p - rho_f) / (rho_f A).
+  // The mean gradient G carries the column's mean load; the SPH pressure carries the bed's
+  // share of it, which it can only do within its density error (c0, `check`).
+  double bed_head = 0;
+  // The height of fluid whose weight the SPH pressure carries (the hydrostatic start,
+  // sqrt(2 g H) in c0): the column's fill height, or in a column periodic in z the bed's
+  // head (0 without a distributor: a suspension's weight is all G's).
+  double hydrostatic_height() const { return periodic_z() ? bed_head : fill_height(); }
   double gravity_magnitude() const {
     return std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);
   }

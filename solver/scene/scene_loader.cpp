@@ -158,6 +158,22 @@ void resolve_resolution(Scene& sc, bool given, SceneProblems& problems) {
     sc.fidelity_note = fmt::format("the preset's resolution {} not applied: {}", res, why);
 }
 
+// The bed's buoyant weight per area over rho_f g (Scene::bed_head): each group's solid
+// volume, (1 - voidage) of its region or its one sphere, of the mobile groups.
+double bed_head(const Scene& sc) {
+  double head = 0.0;
+  for (const ParticleGroupSpec& grp : sc.particles) {
+    if (grp.fixed) continue;
+    const SpeciesSpec& sp = sc.species[sc.species_index(grp.species)];
+    double solid = M_PI * std::pow(sp.diameter, 3) / 6.0;
+    if (grp.kind != ParticleGroupSpec::Kind::kSingle)
+      solid = (1.0 - grp.voidage) * (grp.hi[0] - grp.lo[0]) * (grp.hi[1] - grp.lo[1]) *
+              (grp.hi[2] - grp.lo[2]);
+    head += solid * std::max(0.0, sp.density - sc.fluid.density);
+  }
+  return head / (sc.fluid.density * sc.box.length(0) * sc.box.length(1));
+}
+
 Scene parse(const YAML::Node& root, SceneProblems& problems) {
   Scene sc;
   sc.source = problems.file();
@@ -179,6 +195,7 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
 
   // Resolve the automatic values, so case.yaml records what actually ran.
   const double g = sc.gravity_magnitude();
+  if (sc.periodic_z() && sc.flow.distributor) sc.bed_head = bed_head(sc);
   if (sc.fluid.fill_height <= 0) sc.fluid.fill_height = sc.box.length(2);
   if (sc.fluid.expected_speed <= 0) {
     double u = 0.0;

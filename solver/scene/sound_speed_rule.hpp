@@ -40,7 +40,9 @@ inline double neutral_buoyancy_factor(const Scene& sc) {
 }
 
 // The smallest c0 whose compression error on the buoyant weight stays within `share`.
+// (A walled column's: in one periodic in z the spheres' buoyancy is the mean gradient's.)
 inline double buoyancy_sound_speed(const Scene& sc, double share = kBuoyancyErrorTarget) {
+  if (sc.periodic_z()) return 0.0;
   return std::sqrt(sc.gravity_magnitude() * sc.hydrostatic_height() * neutral_buoyancy_factor(sc) /
                    share);
 }
@@ -52,7 +54,7 @@ inline SoundSpeedReport sound_speed_report(const Scene& sc) {
   r.mach = sc.fluid.expected_speed / r.c0;
   r.flow = r.mach * r.mach;
   r.hydrostatic = sc.gravity_magnitude() * sc.hydrostatic_height() / (r.c0 * r.c0);
-  r.buoyancy = r.hydrostatic * neutral_buoyancy_factor(sc);
+  r.buoyancy = sc.periodic_z() ? 0.0 : r.hydrostatic * neutral_buoyancy_factor(sc);
   return r;
 }
 

@@ -336,6 +336,25 @@ TEST(SceneDefaults, SoundSpeedFromHydrostaticScale) {
   EXPECT_DOUBLE_EQ(sc.output.log_interval, sc.time.end / 200.0);
 }
 
+// A column periodic in z (issue 37): with a distributor the SPH pressure carries the bed's
+// buoyant weight per area, so c0 covers sqrt(2 g H_bed) with H_bed that weight over rho_f g;
+// a suspension without one leaves its weight to the mean gradient (c0 from the speeds).
+TEST(SceneDefaults, SoundSpeedOfAPeriodicColumnFromTheBedsWeight) {
+  const std::string column = R"(domain: {size: [0.004, 0.004, 0.008], periodic_z: true}
+species:
+  - {name: glass, diameter: 1.0e-4, density: 2500}
+particles:
+  - {type: random, species: glass, min: [0, 0, 0], max: [0.004, 0.004, 0.003], voidage: 0.7, seed: 1}
+)";
+  const Scene bed = load_scene_text(column, kFile, {"flow.distributor=true"});
+  const double head = 0.3 * 0.003 * 1500.0 / 1000.0;  // (1 - eps) h (rho_p - rho_f) / rho_f
+  EXPECT_NEAR(bed.bed_head, head, 1e-15);
+  EXPECT_DOUBLE_EQ(bed.fluid.sound_speed, 10.0 * std::sqrt(2.0 * 9.81 * bed.bed_head));
+  const Scene suspension = load_scene_text(column, kFile);
+  EXPECT_EQ(suspension.bed_head, 0.0);
+  EXPECT_DOUBLE_EQ(suspension.fluid.sound_speed, 10.0 * suspension.fluid.expected_speed);
+}
+
 TEST(SceneDefaults, SoundSpeedFromTheDragLawsTerminalSpeed) {
   // u_m is the drag law's terminal speed in clear fluid: 100 um glass under Di Felice's
   // law settles at 7.6 mm/s (Re 0.86), below Stokes' 9.2 mm/s
