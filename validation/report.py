@@ -1800,6 +1800,18 @@ MATRIX = [
                     [("bed_mean_speed_m_per_s", "mean sphere speed at the end (m/s)")])],
            elsewhere="the grains' speed against Masliyah: the 1 m column's first 0.3 s (~1 h on 2 cores), in the "
                      "full report only"),
+    Regime("a homogeneous suspension, periodic in z, ε = 0.8, Re_t 0.86", "cases/suspension_homogeneous.yaml",
+           "slip within 3 % of the drag law's balance, and inside Richardson–Zaki's band (their exponent to "
+           "Garside–Al-Dibouni's) widened by 5 %",
+           gtests=[("periodic_column_validation", "HomogeneousSuspension.SlipAgainstTheLawsBalanceAndRichardsonZaki",
+                    [("slip_over_law", "slip / the law's balance"), ("slip_over_rz_low", "slip / band's low end"),
+                     ("slip_over_rz_high", "slip / band's high end")])]),
+    Regime("a fixed bed, ε = 0.44, Re 0.1–100, five laws", "cases/fixed_bed.yaml",
+           "pressure gradient within 2 % of each law's n f_d/ε; against Ergun recorded (bench/TRADEOFF.md: no "
+           "law within 10 % at every ε and Re)",
+           gtests=[("periodic_column_validation", "FixedBed.PressureGradientAgainstTheLawAndErgun",
+                    [(f"{law}_re{re}_over_ergun", f"{law} Re {re / 10:g}: G / Ergun")
+                     for law in ("di_felice", "rong") for re in (1, 100, 1000)])]),
     Regime("viscosity at ε = 1 and ε = 0.6", "decaying shear wave (spheres fixed)",
            "effective viscosity within 5 % of μ at the 6 mm cases' h and c0",
            gtests=[("viscosity_validation", "Viscosity.WaterAtTheSixMillimetreCasesResolution",
