@@ -18,6 +18,10 @@ and writes DIR/figures/:
                             the Kynch line z = z_top(t0) - v_ref (t - t0)
   interfaces.png            z_top and z_bottom against time (same Kynch line)
   com_tracks.png            centre-of-mass height of each species and of all
+  fluidisation_curve.png    a bed in a column periodic in z (from DIR/log.csv):
+                            pressure drop against U, rising and falling branches,
+                            the bed's buoyant weight per area, the plateau, U_mf
+  bed_height.png            the bed's height and U against time
 
 Any input may be missing, empty, header-only or have a single row (an interrupted
 run): the figure that needs it is skipped with one message on stderr.
@@ -49,6 +53,8 @@ S_TO_MS = 1e3
 MAP_PNG = "voidage_height_time.png"
 INTERFACES_PNG = "interfaces.png"
 COM_PNG = "com_tracks.png"
+FLUIDISATION_PNG = "fluidisation_curve.png"
+BED_HEIGHT_PNG = "bed_height.png"
 
 
 class BadRunDir(Exception):
@@ -411,6 +417,67 @@ def figure_com(com, title, out_dir):
     return _save(fig, out_dir, COM_PNG)
 
 
+def _fluidised(log):
+    """The log.csv columns of a bed in a column periodic in z, or Skip."""
+    need = ("superficial_velocity", "pressure_drop", "bed_height", "bed_weight")
+    if log is None or any(k not in log for k in need):
+        raise Skip("log.csv has no %s column (an older run)" % "/".join(need))
+    if not np.any(log["bed_weight"] > 0):
+        raise Skip("no bed on a distributor (log.csv bed_weight is 0)")
+    return log
+
+
+def figure_fluidisation(log, title, out_dir):
+    """Pressure drop against U, the branches where U rises and falls apart, the bed's
+    buoyant weight per area, the plateau and U_mf (the first U where the rising branch
+    reaches 97 % of the plateau) marked."""
+    log = _fluidised(log)
+    U, dp = log["superficial_velocity"], log["pressure_drop"]
+    weight = float(np.nanmedian(log["bed_weight"]))
+    dU = np.diff(U, prepend=U[0])
+    fig, ax = _new_figure()
+    for sel, label, style in ((dU > 0, "U rising", "-"), (dU < 0, "U falling", "--")):
+        if np.any(sel):
+            ax.plot(U[sel] * M_TO_MM, dp[sel], linestyle=style, marker=".", markersize=3,
+                    linewidth=1.2, label=label)
+    ax.axhline(weight, color="black", linestyle=":", linewidth=1.2,
+               label="buoyant weight per area %.4g Pa" % weight)
+    up = np.nonzero(dU > 0)[0]
+    if up.size >= 10:  # the plateau: the median over the top 30 % of the rising branch's U
+        top = up[U[up] >= U[up].min() + 0.7 * (U[up].max() - U[up].min())]
+        plateau = float(np.median(dp[top]))
+        ax.axhline(plateau, color="grey", linestyle=":", linewidth=1.0,
+                   label="plateau %.4g Pa" % plateau)
+        knee = up[dp[up] >= 0.97 * plateau]
+        if knee.size:
+            u_mf = U[knee[0]]
+            ax.axvline(u_mf * M_TO_MM, color="grey", linestyle="-.", linewidth=1.0,
+                       label="U_mf %.3g mm/s (rising, 97 %% of the plateau)" % (u_mf * M_TO_MM))
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="lower right", fontsize=9)
+    ax.set_xlabel("superficial velocity U (mm/s)", fontsize=11)
+    ax.set_ylabel("pressure drop (Pa)", fontsize=11)
+    ax.set_title("%s: fluidisation curve" % title, fontsize=12)
+    return _save(fig, out_dir, FLUIDISATION_PNG)
+
+
+def figure_bed_height(log, title, out_dir):
+    """The bed's height and U against time."""
+    log = _fluidised(log)
+    t = log["time"] * S_TO_MS
+    fig, ax = _new_figure()
+    ax.plot(t, log["bed_height"] * M_TO_MM, color="black", linewidth=1.6, label="bed height")
+    ax.set_xlabel("time t (ms)", fontsize=11)
+    ax.set_ylabel("bed height (mm)", fontsize=11)
+    ax.grid(True, alpha=0.3)
+    twin = ax.twinx()
+    twin.plot(t, log["superficial_velocity"] * M_TO_MM, color="tab:blue", linestyle="--",
+              linewidth=1.0, label="U")
+    twin.set_ylabel("superficial velocity U (mm/s)", fontsize=11, color="tab:blue")
+    ax.set_title("%s: bed height" % title, fontsize=12)
+    return _save(fig, out_dir, BED_HEIGHT_PNG)
+
+
 # --------------------------------------------------------------------------- driver
 
 def make_figures(run_dir):
@@ -458,6 +525,13 @@ def make_figures(run_dir):
         itf, vh["v_ref"] if vh else None,
         (vh["column_height"] if vh and vh["column_height"] else None), title, out_dir))
     attempt(COM_PNG, com_err, lambda: figure_com(com, title, out_dir))
+    try:  # a bed in a column periodic in z: from the run's log.csv
+        log = read_csv_columns(os.path.join(run_dir, "log.csv"))
+    except Skip:
+        log = None
+    if log is not None and "bed_weight" in log and np.any(log["bed_weight"] > 0):
+        attempt(FLUIDISATION_PNG, None, lambda: figure_fluidisation(log, title, out_dir))
+        attempt(BED_HEIGHT_PNG, None, lambda: figure_bed_height(log, title, out_dir))
     return written
 
 

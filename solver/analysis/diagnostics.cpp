@@ -52,10 +52,14 @@ Diagnostics diagnostics(const Simulation& sim) {
   const double bed_floor = sim.params().dem.walls.bottom;  // a bed on the distributor
   const bool bed = scene.flow.distributor && scene.periodic_z();
   double bed_moment = 0.0, bed_volume = 0.0;  // sum V_j (z_j - floor), sum V_j
+  double bed_weight = 0.0;                    // sum (m_j - rho_f V_j) |g| of the mobile
+  const std::vector<char>& fixed = sim.params().dem.fixed_groups;
   for (std::size_t j = 0; j < s.n_owned; ++j) {
-    if (bed) {
+    const int grp = s.rigid_group[j];
+    if (bed && (grp < 0 || grp >= static_cast<int>(fixed.size()) || !fixed[grp])) {
       bed_moment += s.volume(j) * (s.z[j] - bed_floor);
       bed_volume += s.volume(j);
+      bed_weight += s.mass[j] - rho0 * s.volume(j);
     }
     const int sp = s.species[j];
     d.kinetic_energy_solid +=
@@ -77,9 +81,11 @@ Diagnostics diagnostics(const Simulation& sim) {
         sums.push_back(v);
     sums.push_back(bed_moment);
     sums.push_back(bed_volume);
+    sums.push_back(bed_weight);
     comm.sum(sums);
-    bed_moment = sums[sums.size() - 2];
-    bed_volume = sums.back();
+    bed_moment = sums[sums.size() - 3];
+    bed_volume = sums[sums.size() - 2];
+    bed_weight = sums.back();
     d.fluid_mass = sums[0];
     d.kinetic_energy_fluid = sums[1];
     d.kinetic_energy_solid = sums[2];
@@ -100,6 +106,8 @@ Diagnostics diagnostics(const Simulation& sim) {
   }
   // the height of a uniform bed with the spheres' mean height: twice it
   if (bed_volume > 0.0) d.bed_height = 2.0 * bed_moment / bed_volume;
+  d.bed_weight =
+      bed_weight * std::abs(scene.gravity[2]) / (scene.box.length(0) * scene.box.length(1));
   for (std::size_t sp = 0; sp < ns; ++sp) {
     if (d.count[sp] == 0) continue;
     d.vz_mean[sp] /= d.count[sp];

@@ -23,6 +23,7 @@ struct Diagnostics {
       0;  // analysis/pore_pressure.hpp: the fluid's excess load on the wall, same unit
   double superficial_velocity = 0, pressure_drop = 0;  // propagator/flow_controller.hpp
   double bed_height = 0;  // twice the spheres' volume-weighted mean height over the distributor
+  double bed_weight = 0;  // their buoyant weight per area (Pa), the plateau's pressure drop
   std::vector<double> vz_mean, slip_z_mean, com_z;  // per species
   std::vector<std::size_t> count;                   // spheres per species
 };

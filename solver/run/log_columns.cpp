@@ -72,6 +72,11 @@ const std::vector<LogColumn>& log_columns() {
        "height above it, the height of a uniform bed that holds them (0 without a distributor); "
        "its voidage 1 − Σ V_j / (A bed_height)",
        false, [](std::string& r, D d, S) { put(r, "{:.9g}", d.bed_height); }},
+      {"bed_weight", "Pa",
+       "the buoyant weight per area of the spheres over `flow.distributor` (not `fixed`), "
+       "Σ (m_j − ρf V_j) |g_z| / A: the pressure drop of the bed once fluidised (0 without a "
+       "distributor)",
+       false, [](std::string& r, D d, S) { put(r, "{:.9g}", d.bed_weight); }},
       {"vz_mean", "m/s", "mean vertical velocity of the spheres of the species", true,
        [](std::string& r, D d, S s) { put(r, "{:.17g}", d.vz_mean[s]); }},
       {"slip_z_mean", "m/s", "mean superficial slip ε_i (u_f,z − v_z) (2.74) of the species", true,

@@ -264,6 +264,36 @@ class FiguresTest(unittest.TestCase):
         np.testing.assert_array_equal(d["time"], [0, 0.1, 0.2])
         np.testing.assert_array_equal(d["z_top"], [0.015, 0.0145, 0.0139])
 
+    def write_log(self, bed_weight):
+        # a bed that fluidises at U = 10 mm/s: the drop rises linearly to 100 Pa, holds, and
+        # U falls back
+        t = np.linspace(0.0, 4.0, 81)
+        U = np.where(t < 2.0, 0.01 * t, 0.01 * (4.0 - t))
+        dp = np.minimum(100.0, 1e4 * U)
+        with open(os.path.join(self.run_dir, "log.csv"), "w") as f:
+            f.write("time,step,superficial_velocity,pressure_drop,bed_height,bed_weight\n")
+            for k in range(t.size):
+                f.write("%.17g,%d,%.9g,%.9g,%.9g,%.9g\n" % (t[k], k, U[k], dp[k],
+                                                          0.01 + 0.1 * max(0.0, U[k] - 0.01),
+                                                          bed_weight))
+
+    def test_a_bed_adds_its_fluidisation_curve_and_height(self):
+        self.write_log(100.0)
+        paths, err = self.make()
+        self.assertEqual(err, "")
+        self.assertEqual(self.names(paths), sorted(
+            ["voidage_height_time.png", "interfaces.png", "com_tracks.png",
+             "fluidisation_curve.png", "bed_height.png"]))
+        for name in ("fluidisation_curve.png", "bed_height.png"):
+            frac, _ = non_background_fraction(load_rgb(os.path.join(self.run_dir, "figures", name)))
+            self.assertGreater(frac, 0.03, "%s looks blank" % name)
+
+    def test_no_bed_no_fluidisation_figures(self):
+        self.write_log(0.0)  # a suspension or a walled column: the columns are 0
+        paths, err = self.make()
+        self.assertEqual(err, "")
+        self.assertNotIn("fluidisation_curve.png", self.names(paths))
+
 
 if __name__ == "__main__":
     unittest.main()
