@@ -270,6 +270,19 @@ drag: {law: beetstra}
 coupling: {voidage_smoothing: double}
 startup: {relax_steps: 3}
 )";
+// A bed on the distributor of a column periodic in z with a U ramp (issue 37): the mean
+// pressure gradient G, which the controller carries from step to step, is in the checkpoint.
+const char* const kPeriodicBed = R"(
+name: periodic_bed
+domain: {size: [0.0016, 0.0016, 0.0032], periodic_z: true}
+fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4}
+species: [{name: glass, diameter: 1.0e-4, density: 2500}]
+particles:
+  - {type: random, species: glass, voidage: 0.75, min: [0, 0, 0], max: [0.0016, 0.0016, 0.0016], seed: 3}
+contact: {tangential: {model: linear_history, friction: 0.3}}
+flow: {times: [0, 0.004], superficial_velocity: [0, 0.004], distributor: true, top_plane: 0.003}
+startup: {relax_steps: 2}
+)";
 
 struct Threads {
   int saved = omp_get_max_threads();
@@ -353,6 +366,9 @@ TEST(Restart, DoubleSmoothingRigidBlockOneThread) {
 }
 TEST(Restart, DoubleSmoothingRigidBlockTwoThreads) {
   expect_exact_restart(kDoubleSmoothingBlock, 2, 10, 23);
+}
+TEST(Restart, PeriodicBedWithAFlowTwoThreads) {
+  expect_exact_restart(kPeriodicBed, 2, 10, 23);
 }
 
 TEST(FieldRegistry, HaloTagsHoldAfterAnEvaluation) {
