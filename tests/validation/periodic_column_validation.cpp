@@ -121,10 +121,10 @@ TEST(FixedBed, PressureGradientAgainstTheLawAndErgun) {
       const Scene probe = load_scene(SPHDEM_CASES_DIR "/fixed_bed.yaml");
       const double d = probe.species.at(0).diameter, mu = probe.fluid.viscosity;
       const double rho = probe.fluid.density, U = re * mu / (rho * d);
-      const Scene sc = load_scene(
-          SPHDEM_CASES_DIR "/fixed_bed.yaml",
-          {std::string("drag.law=") + law, "flow.superficial_velocity=[" + std::to_string(U) + "]",
-           "time.end=1e9"});
+      const Scene sc =
+          load_scene(SPHDEM_CASES_DIR "/fixed_bed.yaml",
+                     {std::string("drag.law=") + law,
+                      "flow.superficial_velocity=[" + std::to_string(U) + "]", "time.end=1e9"});
       const double eps = block_lattice(sc, sc.particles.at(0)).voidage, phi = 1.0 - eps;
       Simulation sim(sc);
       double G = 0;
@@ -134,16 +134,20 @@ TEST(FixedBed, PressureGradientAgainstTheLawAndErgun) {
       }
       const double V = M_PI * d * d * d / 6.0, n = phi / V;
       const double c = std::visit(
-          [&](const auto& l) { return l.coefficient(eps, U, d, drag::Fluid{rho, mu}); }, sc.drag);
+          [&](const auto& l) {
+            return l.coefficient(eps, U, d, drag::Fluid{rho, mu});
+          },
+          sc.drag);
       const double closure = n * c * U / eps;
       const double ergun = 150.0 * mu * U * phi * phi / (eps * eps * eps * d * d) +
                            1.75 * rho * U * U * phi / (eps * eps * eps * d);
-      std::printf("%-10s eps %.4f Re %5g: G %.6g Pa/m, the law's n f/eps %.6g (%+.2f %%), Ergun "
-                  "%.6g (%+.1f %%)\n",
-                  law, eps, re, G, closure, 100 * (G / closure - 1), ergun, 100 * (G / ergun - 1));
-      RecordProperty(std::string(law) + "_re" + std::to_string(static_cast<int>(re * 10)) +
-                         "_over_ergun",
-                     std::to_string(G / ergun));
+      std::printf(
+          "%-10s eps %.4f Re %5g: G %.6g Pa/m, the law's n f/eps %.6g (%+.2f %%), Ergun "
+          "%.6g (%+.1f %%)\n",
+          law, eps, re, G, closure, 100 * (G / closure - 1), ergun, 100 * (G / ergun - 1));
+      RecordProperty(
+          std::string(law) + "_re" + std::to_string(static_cast<int>(re * 10)) + "_over_ergun",
+          std::to_string(G / ergun));
       EXPECT_NEAR(G / closure, 1.0, 0.02) << law << " Re " << re;
     }
 }
