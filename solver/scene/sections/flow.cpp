@@ -15,8 +15,9 @@ namespace {
 
 // The spheres' extent along z per group: [low, high] of their centres' reach.
 std::pair<double, double> group_extent_z(const Scene& sc, const ParticleGroupSpec& g) {
-  double d = sc.species[sc.species_index(g.species)].d_max();
-  for (const auto& name : g.mixture) d = std::max(d, sc.species[sc.species_index(name)].d_max());
+  double d = 0.0;  // the largest diameter of the group's species (unknown ones add none)
+  for (const auto& name : g.mixture.empty() ? std::vector<std::string>{g.species} : g.mixture)
+    if (const int k = sc.species_index(name); k >= 0) d = std::max(d, sc.species[k].d_max());
   if (g.kind == ParticleGroupSpec::Kind::kSingle)
     return {g.position[2] - 0.5 * d, g.position[2] + 0.5 * d};
   return {g.lo[2], g.hi[2]};
@@ -54,9 +55,10 @@ void check_planes(MapReader& r, const Scene& sc) {
     if (!grp.fixed)
       for (const std::string& name :
            grp.mixture.empty() ? std::vector<std::string>{grp.species} : grp.mixture)
-        mobile[sc.species_index(name)] = 1;
-  for (const SpeciesSpec& sp : sc.species) {
-    if (!mobile[sc.species_index(sp.name)]) continue;
+        if (const int k = sc.species_index(name); k >= 0) mobile[k] = 1;
+  for (std::size_t k = 0; k < sc.species.size(); ++k) {
+    const SpeciesSpec& sp = sc.species[k];
+    if (!mobile[k]) continue;
     const double u_t =
         terminal_speed(sc.drag, sp.d_min(), sp.density, sc.fluid.density, sc.fluid.viscosity, g);
     if (std::isfinite(u_t) && u_max > u_t) {
