@@ -38,8 +38,11 @@ struct FluidSpherePairs {
   std::vector<double> solid, solid_over_d, drag_solid, drag_solid_over_d;
   double scale = 1.0;  // H_a / h_a of the mobile fluid (scene key coupling.sphere_kernel_scale)
   double drag_scale = 1.0;  // H^drag_a / h_a (coupling.drag_kernel_scale), <= scale
+  // The drag's weights kept apart even at the spheres' kernel width (a bed on the
+  // distributor rewrites them: coupling/distributor_mirror.hpp); set before build_list.
+  bool keep_drag_weights = false;
 
-  bool drag_apart() const { return drag_scale != scale; }
+  bool drag_apart() const { return drag_scale != scale || keep_drag_weights; }
   // The kernel values the drag's fields and the reaction use.
   const std::vector<double>& drag_w() const { return drag_apart() ? w_drag : w; }
 

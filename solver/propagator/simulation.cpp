@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "coupling/distributor_mirror.hpp"
 #include "coupling/drag_exchange.hpp"
 #include "coupling/interpolation.hpp"
 #include "coupling/pressure_coupling.hpp"
@@ -323,6 +324,7 @@ void Simulation::build_sphere_pairs() {
   for (std::size_t a = 0; a < nf; ++a)
     list_reach_[a] =
         params_.coupling.sphere_kernel_scale * kernel::kSupport * fluid_.h[a] + sphere_pair_skin_;
+  sphere_pairs_.keep_drag_weights = params_.coupling.distributor.on();
   sphere_pairs_.build_list(fluid_, sphere_cells_, params_.coupling.sphere_kernel_scale,
                            list_reach_.data(), params_.coupling.drag_kernel_scale);
 }
@@ -340,6 +342,7 @@ void Simulation::compute_voidage() {
   const DemParticles& s = dem_.spheres();
   const CouplingParams& c = params_.coupling;
   sphere_pairs_.evaluate(f, s, c.variational);
+  continue_bed_below_distributor(sphere_pairs_, f, s, c.distributor);
   if (!c.double_smoothing) {
     voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, c.voidage_floor);
     return;

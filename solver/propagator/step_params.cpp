@@ -39,6 +39,8 @@ StepParams compile_step_params(const Scene& scene) {
   c.sphere_kernel_scale = scene.sphere_kernel_scale;
   c.drag_kernel_scale = scene.drag_kernel_scale;
   c.voidage_floor = scene.voidage_floor;
+  if (scene.periodic_z() && scene.flow.distributor)
+    c.distributor = DistributorPlane{scene.box.lo[2], scene.box.length(2)};
   c.double_smoothing = scene.double_smoothing.enabled;
   if (c.double_smoothing) {
     c.big_h_over_d = scene.double_smoothing.h_over_d;

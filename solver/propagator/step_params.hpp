@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "coupling/distributor_mirror.hpp"
 #include "coupling/drag_law_table.hpp"
 #include "dem/contact_registry.hpp"
 #include "dem/sphere_walls.hpp"
@@ -40,6 +41,9 @@ struct CouplingParams {
   double big_h_over_d = 1.5;
   std::vector<std::uint8_t> is_big_species;
   double big_cutoff = 0;  // support of the big species' own kernel (3.9); 0 when off
+  // A bed on flow.distributor: the drag's weights continue it below the plate
+  // (coupling/distributor_mirror.hpp); off elsewhere.
+  DistributorPlane distributor;
 };
 
 struct DemStepParams {
