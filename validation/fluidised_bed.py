@@ -1,0 +1,145 @@
+"""A fluidised bed's run (cases/fluidised_bed.yaml, issue 37) against the experiments'
+correlations and the drag law's own closure.
+
+Reads DIR/case.yaml (the resolved scene: particles, fluid, law) and DIR/log.csv
+(superficial_velocity U, pressure_drop dP, bed_height H, bed_weight W = N V (rho_p -
+rho_f) g / A). The bed's mean voidage is eps = 1 - W / ((rho_p - rho_f) g H).
+
+Rows (each a number and its reference):
+  fixed-bed branch  dP at each rising U below 0.6 U_mf against the law's own n f / eps H
+                    (drag_laws.fixed_bed_gradient at the bed's eps: the solver against its
+                    closure) and against Ergun (1952) at the same eps (the experiments).
+  U_mf              where the rising branch's fit dP = a U + b U^2 (points below 0.8 W) meets
+                    the plateau W (the experimentalists' construction), against Wen & Yu (1966)
+                    and against Ergun's balance and the law's own at the bed's eps_mf (the
+                    mean eps at U below 0.6 U_mf).
+  plateau           mean dP over the rising U in [1.5, 5] U_mf against W (target 2 %).
+  expansion         eps at each U in [1.5, 5] U_mf against the band u_t eps^n of
+                    Richardson & Zaki and Garside & Al-Dibouni widened by 5 % (drag_laws.rz_band),
+                    as U = u_t eps^n solved for eps.
+
+`/usr/bin/python3 validation/fluidised_bed.py DIR` prints the rows (markdown); `rows(DIR)`
+returns them for the report. Standard library plus PyYAML.
+"""
+import csv
+import math
+import os
+import sys
+
+import yaml
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import drag_laws  # noqa: E402
+import theory  # noqa: E402
+
+FIXED_BELOW = 0.6  # of U_mf: the fixed-bed branch
+FIT_BELOW = 0.8  # of W: the points the rising branch's fit takes
+EXPANDED = (1.5, 5.0)  # of U_mf: the expanded bed's rows
+
+
+def read_log(path):
+    with open(path) as fh:
+        rows = list(csv.DictReader(fh))
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def scene(run_dir):
+    with open(os.path.join(run_dir, "case.yaml")) as fh:
+        c = yaml.safe_load(fh)
+    sp = c["species"]
+    if len(sp) != 1:
+        raise SystemExit(f"{run_dir}/case.yaml: one species expected (got {len(sp)})")
+    return dict(d=sp[0]["diameter"], rho_p=sp[0]["density"], rho_f=c["fluid"]["density"],
+                mu=c["fluid"]["viscosity"], law=c["drag"]["law"], g=-c["gravity"][2])
+
+
+def rising(log):
+    """Indices where U rises (or holds after rising) and is positive."""
+    U = log["superficial_velocity"]
+    out, peak = [], 0.0
+    for i, u in enumerate(U):
+        if u > 0.0 and u >= peak:
+            out.append(i)
+        peak = max(peak, u)
+    return out
+
+
+def bed_voidage(s, W, H):
+    return 1.0 - W / ((s["rho_p"] - s["rho_f"]) * s["g"] * H)
+
+
+def fit_branch(Us, dPs):
+    """Least squares dP = a U + b U^2 (Ergun's form)."""
+    s11 = sum(u ** 2 for u in Us); s12 = sum(u ** 3 for u in Us); s22 = sum(u ** 4 for u in Us)
+    r1 = sum(u * p for u, p in zip(Us, dPs)); r2 = sum(u * u * p for u, p in zip(Us, dPs))
+    det = s11 * s22 - s12 * s12
+    return (r1 * s22 - r2 * s12) / det, (s11 * r2 - s12 * r1) / det
+
+
+def rows(run_dir):
+    s, log = scene(run_dir), read_log(os.path.join(run_dir, "log.csv"))
+    U, dP, H, W = (log[k] for k in ("superficial_velocity", "pressure_drop", "bed_height",
+                                    "bed_weight"))
+    up = rising(log)
+    weight = sum(W[i] for i in up) / len(up)
+    fit = [i for i in up if dP[i] < FIT_BELOW * weight]
+    a, b = fit_branch([U[i] for i in fit], [dP[i] for i in fit])
+    umf = (-a + math.sqrt(a * a + 4.0 * b * weight)) / (2.0 * b) if b > 0 else weight / a
+    fixed = [i for i in up if 0.05 * umf < U[i] < FIXED_BELOW * umf]
+    eps_mf = sum(bed_voidage(s, W[i], H[i]) for i in fixed) / len(fixed)
+    d, rho_p, rho_f, mu, g = s["d"], s["rho_p"], s["rho_f"], s["mu"], s["g"]
+    out = {"U_mf": umf, "eps_mf": eps_mf, "weight": weight,
+           "U_mf_wen_yu": drag_laws.wen_yu_umf(d, rho_p, rho_f, mu, g),
+           "U_mf_ergun": drag_laws.u_mf("ergun", d, rho_p, rho_f, mu, eps_mf, g),
+           "U_mf_law": drag_laws.u_mf(s["law"], d, rho_p, rho_f, mu, eps_mf, g)}
+    branch = []
+    for i in fixed[:: max(1, len(fixed) // 8)]:
+        eps = bed_voidage(s, W[i], H[i])
+        law = drag_laws.fixed_bed_gradient(s["law"], d, rho_f, mu, eps, U[i]) * H[i]
+        ergun = drag_laws.ergun_gradient(d, rho_f, mu, eps, U[i]) * H[i]
+        branch.append((U[i], eps, dP[i], law, ergun))
+    out["branch"] = branch
+    lo, hi = EXPANDED[0] * umf, EXPANDED[1] * umf
+    expanded = [i for i in up if lo <= U[i] <= hi]
+    out["plateau"] = sum(dP[i] for i in expanded) / len(expanded) if expanded else float("nan")
+    band = drag_laws.rz_band(d, rho_p, rho_f, mu, 0.5, 0.0, g)
+    u_t, n_rz, n_gad = band[2], band[4], band[5]
+    exp_rows = []
+    for i in expanded[:: max(1, len(expanded) // 8)]:
+        eps = bed_voidage(s, W[i], H[i])
+        # U = u_t eps^n (1 -+ 5 %): the band of eps at this U
+        e_lo = (U[i] / (u_t * 1.05)) ** (1.0 / min(n_rz, n_gad))
+        e_hi = (U[i] / (u_t * 0.95)) ** (1.0 / max(n_rz, n_gad))
+        exp_rows.append((U[i], eps, min(e_lo, e_hi), max(e_lo, e_hi)))
+    out["expansion"] = exp_rows
+    return out
+
+
+def _pct(x):
+    return f"{100.0 * x:+.1f} %"
+
+
+def markdown(r):
+    mm = 1e3
+    lines = [f"U_mf {r['U_mf'] * mm:.2f} mm/s (eps_mf {r['eps_mf']:.3f}): Wen-Yu "
+             f"{r['U_mf_wen_yu'] * mm:.2f} ({_pct(r['U_mf'] / r['U_mf_wen_yu'] - 1)}), Ergun at eps_mf "
+             f"{r['U_mf_ergun'] * mm:.2f} ({_pct(r['U_mf'] / r['U_mf_ergun'] - 1)}), the law's own "
+             f"{r['U_mf_law'] * mm:.2f} ({_pct(r['U_mf'] / r['U_mf_law'] - 1)})",
+             f"plateau {r['plateau']:.1f} Pa against the buoyant weight per area {r['weight']:.1f} Pa "
+             f"({_pct(r['plateau'] / r['weight'] - 1)})", "",
+             "| U (mm/s) | eps | dP (Pa) | law's n f/eps H | vs law | Ergun | vs Ergun |",
+             "|---|---|---|---|---|---|---|"]
+    for U, eps, dP, law, ergun in r["branch"]:
+        lines.append(f"| {U * mm:.2f} | {eps:.3f} | {dP:.1f} | {law:.1f} | {_pct(dP / law - 1)} | "
+                     f"{ergun:.1f} | {_pct(dP / ergun - 1)} |")
+    lines += ["", "| U (mm/s) | U/U_mf | eps | RZ-GAD band ±5 % | offset |", "|---|---|---|---|---|"]
+    for U, eps, lo, hi in r["expansion"]:
+        off = 0.0 if lo <= eps <= hi else (eps / hi - 1 if eps > hi else eps / lo - 1)
+        lines.append(f"| {U * mm:.1f} | {U / r['U_mf']:.2f} | {eps:.3f} | {lo:.3f}-{hi:.3f} | {_pct(off)} |")
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        raise SystemExit("usage: fluidised_bed.py RUN_DIR")
+    print(markdown(rows(sys.argv[1])))
