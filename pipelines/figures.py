@@ -44,6 +44,9 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib import patheffects
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fluidisation  # noqa: E402  (U_mf's construction, shared with validation/fluidised_bed.py)
+
 FIGSIZE = (7.0, 4.5)   # inches
 DPI = 120
 MAP_CMAP = "viridis"   # perceptually uniform
@@ -429,8 +432,9 @@ def _fluidised(log):
 
 def figure_fluidisation(log, title, out_dir):
     """Pressure drop against U, the branches where U rises and falls apart, the bed's
-    buoyant weight per area, the plateau and U_mf (the first U where the rising branch
-    reaches 97 % of the plateau) marked."""
+    buoyant weight per area, and (fluidisation.py, as validation/fluidised_bed.py reads
+    them) the rising branch's fixed-bed fit, U_mf where it meets the weight and the plateau
+    over 1.5-5 U_mf."""
     log = _fluidised(log)
     U, dp = log["superficial_velocity"], log["pressure_drop"]
     weight = float(np.nanmedian(log["bed_weight"]))
@@ -442,17 +446,18 @@ def figure_fluidisation(log, title, out_dir):
                     linewidth=1.2, label=label)
     ax.axhline(weight, color="black", linestyle=":", linewidth=1.2,
                label="buoyant weight per area %.4g Pa" % weight)
-    up = np.nonzero(dU > 0)[0]
-    if up.size >= 10:  # the plateau: the median over the top 30 % of the rising branch's U
-        top = up[U[up] >= U[up].min() + 0.7 * (U[up].max() - U[up].min())]
-        plateau = float(np.median(dp[top]))
-        ax.axhline(plateau, color="grey", linestyle=":", linewidth=1.0,
-                   label="plateau %.4g Pa" % plateau)
-        knee = up[dp[up] >= 0.97 * plateau]
-        if knee.size:
-            u_mf = U[knee[0]]
-            ax.axvline(u_mf * M_TO_MM, color="grey", linestyle="-.", linewidth=1.0,
-                       label="U_mf %.3g mm/s (rising, 97 %% of the plateau)" % (u_mf * M_TO_MM))
+    fit = fluidisation.u_mf(U, dp, weight)
+    if fit is not None:
+        u_mf, a, b = fit
+        uu = np.linspace(0.0, u_mf, 50)
+        ax.plot(uu * M_TO_MM, a * uu + b * uu * uu, color="grey", linestyle=":", linewidth=1.0,
+                label="fixed-bed fit a U + b U²")
+        ax.axvline(u_mf * M_TO_MM, color="grey", linestyle="-.", linewidth=1.0,
+                   label="U_mf %.3g mm/s (the fit meets the weight)" % (u_mf * M_TO_MM))
+        level = fluidisation.plateau(U, dp, u_mf)
+        if np.isfinite(level):
+            ax.axhline(level, color="grey", linestyle="--", linewidth=0.8,
+                       label="plateau %.4g Pa (1.5-5 U_mf, rising)" % level)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="lower right", fontsize=9)
     ax.set_xlabel("superficial velocity U (mm/s)", fontsize=11)

@@ -10,7 +10,7 @@ Rows (each a number and its reference):
                     (drag_laws.fixed_bed_gradient at the bed's eps: the solver against its
                     closure) and against Ergun (1952) at the same eps (the experiments).
   U_mf              where the rising branch's fit dP = a U + b U^2 (points below 0.8 W) meets
-                    the plateau W (the experimentalists' construction), against Wen & Yu (1966)
+                    W (pipelines/fluidisation.py, as the figure draws it), against Wen & Yu (1966)
                     and against Ergun's balance and the law's own at the bed's eps_mf (the
                     mean eps at U below 0.6 U_mf).
   plateau           mean dP over the rising U in [1.5, 5] U_mf against W (target 2 %).
@@ -19,22 +19,21 @@ Rows (each a number and its reference):
                     as U = u_t eps^n solved for eps.
 
 `/usr/bin/python3 validation/fluidised_bed.py DIR` prints the rows (markdown); `rows(DIR)`
-returns them for the report. Standard library plus PyYAML.
+returns them for the report. numpy and PyYAML.
 """
 import csv
-import math
 import os
 import sys
 
 import yaml
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "pipelines"))
 import drag_laws  # noqa: E402
-import theory  # noqa: E402
+import fluidisation  # noqa: E402  (U_mf's construction, shared with the figure)
 
 FIXED_BELOW = 0.6  # of U_mf: the fixed-bed branch
-FIT_BELOW = 0.8  # of W: the points the rising branch's fit takes
-EXPANDED = (1.5, 5.0)  # of U_mf: the expanded bed's rows
 
 
 def read_log(path):
@@ -53,38 +52,17 @@ def scene(run_dir):
                 mu=c["fluid"]["viscosity"], law=c["drag"]["law"], g=-c["gravity"][2])
 
 
-def rising(log):
-    """Indices where U rises (or holds after rising) and is positive."""
-    U = log["superficial_velocity"]
-    out, peak = [], 0.0
-    for i, u in enumerate(U):
-        if u > 0.0 and u >= peak:
-            out.append(i)
-        peak = max(peak, u)
-    return out
-
-
 def bed_voidage(s, W, H):
     return 1.0 - W / ((s["rho_p"] - s["rho_f"]) * s["g"] * H)
-
-
-def fit_branch(Us, dPs):
-    """Least squares dP = a U + b U^2 (Ergun's form)."""
-    s11 = sum(u ** 2 for u in Us); s12 = sum(u ** 3 for u in Us); s22 = sum(u ** 4 for u in Us)
-    r1 = sum(u * p for u, p in zip(Us, dPs)); r2 = sum(u * u * p for u, p in zip(Us, dPs))
-    det = s11 * s22 - s12 * s12
-    return (r1 * s22 - r2 * s12) / det, (s11 * r2 - s12 * r1) / det
 
 
 def rows(run_dir):
     s, log = scene(run_dir), read_log(os.path.join(run_dir, "log.csv"))
     U, dP, H, W = (log[k] for k in ("superficial_velocity", "pressure_drop", "bed_height",
                                     "bed_weight"))
-    up = rising(log)
+    up = list(fluidisation.rising(U))
     weight = sum(W[i] for i in up) / len(up)
-    fit = [i for i in up if dP[i] < FIT_BELOW * weight]
-    a, b = fit_branch([U[i] for i in fit], [dP[i] for i in fit])
-    umf = (-a + math.sqrt(a * a + 4.0 * b * weight)) / (2.0 * b) if b > 0 else weight / a
+    umf = fluidisation.u_mf(U, dP, weight)[0]
     fixed = [i for i in up if 0.05 * umf < U[i] < FIXED_BELOW * umf]
     eps_mf = sum(bed_voidage(s, W[i], H[i]) for i in fixed) / len(fixed)
     d, rho_p, rho_f, mu, g = s["d"], s["rho_p"], s["rho_f"], s["mu"], s["g"]
@@ -99,9 +77,8 @@ def rows(run_dir):
         ergun = drag_laws.ergun_gradient(d, rho_f, mu, eps, U[i]) * H[i]
         branch.append((U[i], eps, dP[i], law, ergun))
     out["branch"] = branch
-    lo, hi = EXPANDED[0] * umf, EXPANDED[1] * umf
-    expanded = [i for i in up if lo <= U[i] <= hi]
-    out["plateau"] = sum(dP[i] for i in expanded) / len(expanded) if expanded else float("nan")
+    expanded = list(fluidisation.expanded(U, umf))
+    out["plateau"] = fluidisation.plateau(U, dP, umf)
     band = drag_laws.rz_band(d, rho_p, rho_f, mu, 0.5, 0.0, g)
     u_t, n_rz, n_gad = band[2], band[4], band[5]
     exp_rows = []
