@@ -3,8 +3,8 @@
 // reads near the plate as if the bed went on below it. Across the plate lies the
 // column's clear top (the plenum, seen through the periodic face); a kernel straddling
 // the plate would mix it into the voidage (2.50) and the fluid velocity (2.69) the
-// bottom spheres' drag reads, and lower that drag by about a third in a bed five
-// smoothing lengths tall (bench/TRADEOFF.md). So, in the drag's weights only (the
+// bottom spheres' drag reads, and lower that drag (measured in bench/TRADEOFF.md,
+// session 34). So, in the drag's weights only (the
 // voidage eps_drag, the interpolation at the spheres, the reaction, the drag exchange):
 //   W_aj -> W(r_a - r_j) + W(r_a - r'_j),  r'_j the mirror of r_j in the plate,
 // for fluid a and sphere j on the same side of it, and 0 for a pair across it. The same
