@@ -1762,7 +1762,7 @@ class FluidisedBed:
             Row(self.name, "U_mf law's own balance at ε_mf", f"{own * mm:.2f} mm/s",
                 f"{law}'s fixed-bed gradient at ε_mf = the buoyant weight per volume (the solver's own closure)",
                 umf_s + " mm/s", umf / own - 1.0, None, r0),
-            Row(self.name, f"U_mf (the rising branch's fit meets the plateau), ε_mf {eps_s}", f"{wen_yu * mm:.2f} mm/s",
+            Row(self.name, f"U_mf (the rising branch's fixed-bed fit meets the weight), ε_mf {eps_s}", f"{wen_yu * mm:.2f} mm/s",
                 self.WEN_YU, umf_s + " mm/s", umf / wen_yu - 1.0, self.TARGET_UMF, r0, known=evidence),
             Row(self.name, "U_mf against Ergun's balance at ε_mf", f"{ergun * mm:.2f} mm/s", self.ERGUN,
                 umf_s + " mm/s", umf / ergun - 1.0, self.TARGET_UMF, r0, known=evidence),
