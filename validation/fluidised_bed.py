@@ -111,7 +111,7 @@ def markdown(r):
                      f"{ergun:.1f} | {_pct(dP / ergun - 1)} |")
     lines += ["", "| U (mm/s) | U/U_mf | eps | RZ-GAD band ±5 % | offset |", "|---|---|---|---|---|"]
     for U, eps, lo, hi in r["expansion"]:
-        off = 0.0 if lo <= eps <= hi else (eps / hi - 1 if eps > hi else eps / lo - 1)
+        off = drag_laws.band_offset(eps, lo, hi)
         lines.append(f"| {U * mm:.1f} | {U / r['U_mf']:.2f} | {eps:.3f} | {lo:.3f}-{hi:.3f} | {_pct(off)} |")
     return "\n".join(lines)
 

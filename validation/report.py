@@ -1775,8 +1775,7 @@ class FluidisedBed:
                               "of the law's, so part of the bed's weight stays on the distributor"))
         worst = []
         for g in got:
-            offs = [0.0 if lo <= e <= hi else (e / hi - 1.0 if e > hi else e / lo - 1.0)
-                    for _, e, lo, hi in g["expansion"]]
+            offs = [drag_laws.band_offset(e, lo, hi) for _, e, lo, hi in g["expansion"]]
             worst.append(max(offs, key=abs) if offs else float("nan"))
         w, w_s = self.spread(worst, "{:+.3f}")
         rows.append(Row(self.name, "expanded bed's ε, U in 1.5–5 U_mf: worst offset from the band",
