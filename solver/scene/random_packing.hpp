@@ -20,6 +20,10 @@
 //   (Torquato, Uche & Stillinger 2006) and the acceptance rate collapses before that.
 //   After kRsaAttemptsPerSphere rejected centres for one sphere it stops with a
 //   SceneError naming particles.N.voidage.
+// - Below voidage kRearrangeBelow (where RSA slows down and then jams) the same spheres are
+//   placed by collective rearrangement instead (collective_rearrangement.hpp): all centres
+//   drawn at once, the overlaps pushed apart while the radii grow. It stops with a
+//   SceneError naming particles.N.voidage when overlaps remain (near random close packing).
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +34,7 @@ namespace sphdem {
 
 inline constexpr std::uint64_t kRsaAttemptsPerSphere = 100000;
 inline constexpr double kRsaSaturation = 0.384;  // jamming limit of RSA, equal spheres
+inline constexpr double kRearrangeBelow = 0.65;  // voidage: below it, collective rearrangement
 
 struct RandomPacking {
   // one entry per sphere, in insertion order (largest first)
@@ -37,6 +42,7 @@ struct RandomPacking {
   std::vector<std::uint16_t> species;  // index into Scene::species
   double voidage = 1.0;                // achieved: 1 - sum_j V_j / V_region
   std::uint64_t attempts = 0;          // centres drawn in all
+  std::uint64_t sweeps = 0;            // of collective rearrangement (0 for RSA)
 };
 
 // Places the spheres of the random group `scene.particles[group]`, avoiding the spheres

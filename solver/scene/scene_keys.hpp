@@ -119,7 +119,7 @@ inline constexpr SceneKey kSceneKeys[] = {
     // ---- particles
     key_rows::list("particles", "groups of spheres placed at t = 0"),
     key_rows::choice("particles.N.type", key_choices::kGroupType, "single",
-        "one sphere, a lattice block, or a random suspension (random sequential addition)"),
+        "one sphere, a lattice block, or a random suspension (random sequential addition; below voidage 0.65 collective rearrangement)"),
     key_rows::text("particles.N.species", "",
         "a `species.N.name` (one `diameter` for `single` and `lattice`); random and lattice: also a list of names, a mixture")
         .required(),
@@ -146,7 +146,7 @@ inline constexpr SceneKey kSceneKeys[] = {
     key_rows::number("particles.N.voidage", "–", 0.9, half_open(0.2595, 1),
         "target voidage ε of the region")
         .when("type=lattice|random")
-        .limits("simple cubic ≥ 1 − π/6 = 0.4764, fcc ≥ 1 − π/(3√2) = 0.2595, random ≥ 0.36 (random close packing)"),
+        .limits("simple cubic ≥ 1 − π/6 = 0.4764, fcc ≥ 1 − π/(3√2) = 0.2595, random ≥ 0.36 (random close packing; equal spheres reach 0.4-0.42)"),
     key_rows::whole64("particles.N.seed", 0,
         "seed of the positions and diameters (random), of the species' shuffle over the sites (mixed lattice)")
         .when("type=random|lattice").limits("lattice: a mixed one only"),

@@ -1,6 +1,7 @@
 // Random suspensions (particle group `type: random`, random_packing.hpp): no overlap
 // (across the periodic faces too, by brute force over all pairs), the achieved voidage,
-// homogeneity, seeded reproducibility, mixture fractions, and the jam error.
+// homogeneity, seeded reproducibility, mixture fractions; below voidage kRearrangeBelow
+// the same by collective rearrangement, and its error near random close packing.
 //
 // Homogeneity bands: the centres of the spheres of one size are uniform over the
 // region where they may lie, so the count in a part holding a share p of it is, for
@@ -226,17 +227,80 @@ TEST(RandomPacking, SameSeedIsBitIdenticalOtherSeedDiffers) {
   EXPECT_FALSE(bit_identical(a.radius, c.radius));
 }
 
-TEST(RandomPacking, JamsAtVoidageHalfWithAClearError) {
-  // Equal spheres at eps = 0.5 (solid fraction 0.5 > RSA's saturation 0.384).
+TEST(RandomPacking, DenseByCollectiveRearrangementWithoutOverlapEvenlyAndSeeded) {
+  // eps = 0.5 (solid fraction 0.5 > RSA's saturation 0.384), 6112 spheres in a 0.4 mm
+  // layer: placed by collective rearrangement, none overlapping (by brute force, across
+  // the periodic faces too), inside the region, the count of the target voidage.
   const Scene sc =
-      load_scene_text(scene_text(kGlass, random_group(0.5, 1, "0", "0.0006")), "jam.yaml");
+      load_scene_text(scene_text(kGlass, random_group(0.5, 1, "0", "0.0004")), "dense.yaml");
+  const RandomPacking P = pack(sc);
+  const double V = 0.004 * 0.004 * 0.0004, Vp = kPi * 1e-12 / 6.0, r = 0.5e-4;
+  ASSERT_EQ(P.x.size(), static_cast<std::size_t>(std::lround(0.5 * V / Vp)));
+  EXPECT_GT(P.sweeps, 0u);
+  EXPECT_LE(std::abs(P.voidage - 0.5), 0.5 * Vp / V);
+  EXPECT_LE(max_overlap(P.x, P.y, P.z, P.radius, 0.004, 0.004), 1e-12 * 1e-4);
+  for (std::size_t i = 0; i < P.x.size(); ++i) {
+    EXPECT_GE(P.x[i], 0.0);
+    EXPECT_LT(P.x[i], 0.004);
+    EXPECT_GE(P.z[i], r * (1 - 1e-12));
+    EXPECT_LE(P.z[i], (0.0004 - r) * (1 + 1e-12));
+  }
+  // Even over the periodic axes: counts in the quarters of x and of y within 4 binomial
+  // standard deviations (a packing is sub-Poissonian, so this band is conservative).
+  const double N = static_cast<double>(P.x.size()), band = 4.0 * std::sqrt(N * 0.25 * 0.75);
+  for (const auto* c : {&P.x, &P.y}) {
+    std::vector<double> n(4, 0);
+    for (double v : *c) n[std::min(3, static_cast<int>(v / 0.001))] += 1;
+    for (double k : n) EXPECT_LE(std::abs(k - 0.25 * N), band) << k;
+  }
+  // The same seed gives the same packing, bit for bit; another seed another one.
+  const RandomPacking again = pack(sc);
+  EXPECT_TRUE(bit_identical(P.x, again.x) && bit_identical(P.z, again.z));
+  const RandomPacking other =
+      pack(load_scene_text(scene_text(kGlass, random_group(0.5, 2, "0", "0.0004")), "d.yaml"));
+  EXPECT_FALSE(bit_identical(P.x, other.x));
+}
+
+TEST(RandomPacking, DenseGroupAvoidsEarlierGroups) {
+  // A dense random group (eps 0.55, below RSA's reach) in a region that does not span the
+  // periodic width, over a lattice bed whose top layer reaches into it and around a single
+  // sphere inside it: no overlap, each of its spheres inside the region.
+  const std::string groups =
+      "  - {type: lattice, species: glass, min: [0, 0, 0], max: [0.004, 0.004, 0.00052], "
+      "voidage: 0.6}\n"
+      "  - {type: single, species: glass, position: [0.002, 0.002, 0.0009]}\n"
+      "  - {type: random, species: glass, min: [0.0005, 0, 0.0005], max: [0.0035, 0.004, "
+      "0.0013], voidage: 0.55, seed: 3}\n";
+  const Scene sc = load_scene_text(scene_text(kGlass, groups), "dense.yaml");
+  FluidParticles f;
+  DemParticles s;
+  place_particles(sc, f, s);
+  EXPECT_LE(max_overlap(s.x, s.y, s.z, s.radius, 0.004, 0.004), 1e-12 * 1e-4);
+  const std::size_t earlier = static_cast<std::size_t>(
+      std::count_if(s.z.begin(), s.z.end(), [](double z) { return z < 0.00052; }) + 1);
+  ASSERT_GT(s.size(), earlier + 3000);
+  const double r = 0.5e-4;
+  for (std::size_t i = earlier; i < s.size(); ++i) {
+    EXPECT_GE(s.x[i], (0.0005 + r) * (1 - 1e-12));
+    EXPECT_LE(s.x[i], (0.0035 - r) * (1 + 1e-12));
+    EXPECT_GE(s.z[i], (0.0005 + r) * (1 - 1e-12));
+    EXPECT_LE(s.z[i], (0.0013 - r) * (1 + 1e-12));
+  }
+}
+
+TEST(RandomPacking, StopsShortOfRandomClosePackingWithAClearError) {
+  // Equal spheres at eps = 0.37 (solid fraction 0.63, near random close packing).
+  const Scene sc = load_scene_text(
+      "domain: {size: [0.001, 0.001, 0.001]}\nfluid: {enabled: false}\nspecies:\n" + kGlass +
+          "particles:\n  - {type: random, species: glass, voidage: 0.37, seed: 1}\n",
+      "jam.yaml");
   try {
     pack(sc);
-    FAIL() << "eps = 0.5 was reached by RSA";
+    FAIL() << "eps = 0.37 was reached";
   } catch (const SceneError& e) {
     const std::string m = e.what();
-    for (const char* part :
-         {"jam.yaml", "'particles.0.voidage'", "jammed", "0.384", "raise the voidage"})
+    for (const char* part : {"jam.yaml", "'particles.0.voidage'", "collective rearrangement",
+                             "overlapping", "0.58", "raise the voidage"})
       EXPECT_NE(m.find(part), std::string::npos) << part << " missing in: " << m;
   }
 }

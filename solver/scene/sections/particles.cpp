@@ -157,8 +157,8 @@ void read_particles(MapReader& top, Scene& sc, ReadContext& cx) {
           r.fail(r.key("max"), "region must satisfy 0 <= min < max <= domain.size (max <= min)");
       }
       // the densest packing: simple cubic 1 - pi/6, fcc 1 - pi/(3 sqrt 2); a random
-      // packing no denser than random close packing, 1 - 0.64 (random sequential
-      // addition stops far earlier, random_packing.hpp, and says so)
+      // packing no denser than random close packing, 1 - 0.64 (its placement stops
+      // earlier, random_packing.hpp, and says so)
       const double densest = g.kind == ParticleGroupSpec::Kind::kRandom ? 0.36
                              : g.fcc ? 1.0 - M_PI / (3.0 * std::sqrt(2.0))
                                      : 1.0 - M_PI / 6.0;
