@@ -8,6 +8,8 @@ validation rows (validation/fluidised_bed.py). numpy only.
   u_mf        where that fit meets W: the experimentalists' construction of U_mf (the
               fixed-bed line against the plateau)
   plateau     the mean dP of the rising rows with U in EXPANDED x U_mf (the fluidised bed)
+  holds       the stretches where U is held at a positive value, each as its U and the rows
+              of its second half (where the bed has had time to settle at that U)
 """
 import numpy as np
 
@@ -52,3 +54,18 @@ def plateau(U, dP, umf):
     """The mean dP over expanded(U, umf); nan when no row is there."""
     sel = expanded(U, umf)
     return float(np.mean(np.asarray(dP)[sel])) if sel.size else float("nan")
+
+
+def holds(t, U, min_duration=0.0):
+    """[(U, rows)] for each stretch of rows at one positive U lasting at least min_duration
+    (s): rows are those of its second half in time."""
+    t, U = np.asarray(t, dtype=float), np.asarray(U, dtype=float)
+    out, start = [], 0
+    for k in range(1, len(U) + 1):
+        if k < len(U) and U[k] == U[start]:
+            continue
+        if U[start] > 0.0 and t[k - 1] - t[start] >= max(min_duration, 0.0) and k - 1 > start:
+            half = 0.5 * (t[start] + t[k - 1])
+            out.append((float(U[start]), np.arange(start, k)[t[start:k] >= half]))
+        start = k
+    return out

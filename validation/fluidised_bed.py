@@ -16,7 +16,10 @@ Rows (each a number and its reference):
   plateau           mean dP over the rising U in [1.5, 5] U_mf against W (target 2 %).
   expansion         eps at each U in [1.5, 5] U_mf against the band u_t eps^n of
                     Richardson & Zaki and Garside & Al-Dibouni widened by 5 % (drag_laws.rz_band),
-                    as U = u_t eps^n solved for eps.
+                    as U = u_t eps^n solved for eps. Where the schedule holds U for MIN_HOLD or
+                    longer (a steady bed, as the experiments read it), one row per hold: the mean
+                    eps over the hold's second half, with its drift (last minus first) there;
+                    else the rows of the rising ramp (a bed still expanding; drift nan).
 
 `/usr/bin/python3 validation/fluidised_bed.py DIR` prints the rows (markdown); `rows(DIR)`
 returns them for the report. numpy and PyYAML.
@@ -34,6 +37,7 @@ import drag_laws  # noqa: E402
 import fluidisation  # noqa: E402  (U_mf's construction, shared with the figure)
 
 FIXED_BELOW = 0.6  # of U_mf: the fixed-bed branch
+MIN_HOLD = 0.5  # s: a hold of U this long is read as a steady expanded bed
 
 
 def read_log(path):
@@ -77,18 +81,26 @@ def rows(run_dir):
         ergun = drag_laws.ergun_gradient(d, rho_f, mu, eps, U[i]) * H[i]
         branch.append((U[i], eps, dP[i], law, ergun))
     out["branch"] = branch
-    expanded = list(fluidisation.expanded(U, umf))
     out["plateau"] = fluidisation.plateau(U, dP, umf)
     band = drag_laws.rz_band(d, rho_p, rho_f, mu, 0.5, 0.0, g)
     u_t, n_rz, n_gad = band[2], band[4], band[5]
+
+    def band_at(u):  # U = u_t eps^n (1 -+ 5 %): the band of eps at this U
+        e_lo = (u / (u_t * 1.05)) ** (1.0 / min(n_rz, n_gad))
+        e_hi = (u / (u_t * 0.95)) ** (1.0 / max(n_rz, n_gad))
+        return min(e_lo, e_hi), max(e_lo, e_hi)
+
+    lo_u, hi_u = (f * umf for f in fluidisation.EXPANDED)
+    held = [(u, k) for u, k in fluidisation.holds(log["time"], U, MIN_HOLD) if lo_u <= u <= hi_u]
     exp_rows = []
-    for i in expanded[:: max(1, len(expanded) // 8)]:
-        eps = bed_voidage(s, W[i], H[i])
-        # U = u_t eps^n (1 -+ 5 %): the band of eps at this U
-        e_lo = (U[i] / (u_t * 1.05)) ** (1.0 / min(n_rz, n_gad))
-        e_hi = (U[i] / (u_t * 0.95)) ** (1.0 / max(n_rz, n_gad))
-        exp_rows.append((U[i], eps, min(e_lo, e_hi), max(e_lo, e_hi)))
-    out["expansion"] = exp_rows
+    for u, k in held:
+        eps = [bed_voidage(s, W[i], H[i]) for i in k]
+        exp_rows.append((u, sum(eps) / len(eps), *band_at(u), eps[-1] - eps[0]))
+    if not held:
+        expanded = list(fluidisation.expanded(U, umf))
+        for i in expanded[:: max(1, len(expanded) // 8)]:
+            exp_rows.append((U[i], bed_voidage(s, W[i], H[i]), *band_at(U[i]), float("nan")))
+    out["expansion"], out["expansion_held"] = exp_rows, bool(held)
     return out
 
 
@@ -109,10 +121,13 @@ def markdown(r):
     for U, eps, dP, law, ergun in r["branch"]:
         lines.append(f"| {U * mm:.2f} | {eps:.3f} | {dP:.1f} | {law:.1f} | {_pct(dP / law - 1)} | "
                      f"{ergun:.1f} | {_pct(dP / ergun - 1)} |")
-    lines += ["", "| U (mm/s) | U/U_mf | eps | RZ-GAD band ±5 % | offset |", "|---|---|---|---|---|"]
-    for U, eps, lo, hi in r["expansion"]:
+    how = "held (mean over each hold's second half, drift over it)" if r["expansion_held"] else "rising"
+    lines += ["", f"expansion, U {how}:", "",
+              "| U (mm/s) | U/U_mf | eps | RZ-GAD band ±5 % | offset | drift |", "|---|---|---|---|---|---|"]
+    for U, eps, lo, hi, drift in r["expansion"]:
         off = drag_laws.band_offset(eps, lo, hi)
-        lines.append(f"| {U * mm:.1f} | {U / r['U_mf']:.2f} | {eps:.3f} | {lo:.3f}-{hi:.3f} | {_pct(off)} |")
+        lines.append(f"| {U * mm:.1f} | {U / r['U_mf']:.2f} | {eps:.3f} | {lo:.3f}-{hi:.3f} | {_pct(off)} | "
+                     f"{drift:+.4f} |")
     return "\n".join(lines)
 
 
