@@ -198,6 +198,16 @@ def archimedes(d, rho_p, rho_f, mu, g=G):
     return d ** 3 * rho_f * (rho_p - rho_f) * g / mu ** 2
 
 
+def expanded_voidage(law, d, rho_p, rho_f, mu, U, g=G):
+    """The voidage at which a bed fluidised at superficial U is held by the law's drag: the
+    eps whose suspension_slip is U (it rises with eps), in [0.36, 1); 1 where even eps -> 1
+    does not hold the spheres (U past u_t)."""
+    lo, hi = 0.36, 1.0 - 1e-9
+    if suspension_slip(law, d, rho_p, rho_f, mu, hi, g) <= U:
+        return 1.0
+    return theory.bisect(lambda e: suspension_slip(law, d, rho_p, rho_f, mu, e, g) - U, lo, hi)
+
+
 def wen_yu_umf(d, rho_p, rho_f, mu, g=G):
     """Wen & Yu's U_mf: Re_mf = sqrt(33.7^2 + 0.0408 Ar) - 33.7."""
     re_mf = math.sqrt(33.7 ** 2 + 0.0408 * archimedes(d, rho_p, rho_f, mu, g)) - 33.7

@@ -19,7 +19,9 @@ Rows (each a number and its reference):
                     as U = u_t eps^n solved for eps. Where the schedule holds U for MIN_HOLD or
                     longer (a steady bed, as the experiments read it), one row per hold: the mean
                     eps over the hold's second half, with its drift (last minus first) there;
-                    else the rows of the rising ramp (a bed still expanding; drift nan).
+                    else the rows of the rising ramp (a bed still expanding; drift nan). Each
+                    row also carries the law's own expanded eps at that U
+                    (drag_laws.expanded_voidage: the solver's closure, the evidence of a miss).
 
 `/usr/bin/python3 validation/fluidised_bed.py DIR` prints the rows (markdown); `rows(DIR)`
 returns them for the report. numpy and PyYAML.
@@ -93,13 +95,16 @@ def rows(run_dir):
     lo_u, hi_u = (f * umf for f in fluidisation.EXPANDED)
     held = [(u, k) for u, k in fluidisation.holds(log["time"], U, MIN_HOLD) if lo_u <= u <= hi_u]
     exp_rows = []
+    def own(u):  # the law's own expanded voidage at U (the solver's closure)
+        return drag_laws.expanded_voidage(s["law"], d, rho_p, rho_f, mu, u, g)
+
     for u, k in held:
         eps = [bed_voidage(s, W[i], H[i]) for i in k]
-        exp_rows.append((u, sum(eps) / len(eps), *band_at(u), eps[-1] - eps[0]))
+        exp_rows.append((u, sum(eps) / len(eps), *band_at(u), eps[-1] - eps[0], own(u)))
     if not held:
         expanded = list(fluidisation.expanded(U, umf))
         for i in expanded[:: max(1, len(expanded) // 8)]:
-            exp_rows.append((U[i], bed_voidage(s, W[i], H[i]), *band_at(U[i]), float("nan")))
+            exp_rows.append((U[i], bed_voidage(s, W[i], H[i]), *band_at(U[i]), float("nan"), own(U[i])))
     out["expansion"], out["expansion_held"] = exp_rows, bool(held)
     return out
 
@@ -123,11 +128,12 @@ def markdown(r):
                      f"{ergun:.1f} | {_pct(dP / ergun - 1)} |")
     how = "held (mean over each hold's second half, drift over it)" if r["expansion_held"] else "rising"
     lines += ["", f"expansion, U {how}:", "",
-              "| U (mm/s) | U/U_mf | eps | RZ-GAD band ±5 % | offset | drift |", "|---|---|---|---|---|---|"]
-    for U, eps, lo, hi, drift in r["expansion"]:
+              "| U (mm/s) | U/U_mf | eps | RZ-GAD band ±5 % | offset | drift | the law's own eps | vs law |",
+              "|---|---|---|---|---|---|---|---|"]
+    for U, eps, lo, hi, drift, law in r["expansion"]:
         off = drag_laws.band_offset(eps, lo, hi)
         lines.append(f"| {U * mm:.1f} | {U / r['U_mf']:.2f} | {eps:.3f} | {lo:.3f}-{hi:.3f} | {_pct(off)} | "
-                     f"{drift:+.4f} |")
+                     f"{drift:+.4f} | {law:.3f} | {_pct(eps / law - 1)} |")
     return "\n".join(lines)
 
 

@@ -102,9 +102,11 @@ class FluidisedBedRows(unittest.TestCase):
             self.assertAlmostEqual(dp / ergun, 1.0, delta=1e-9)
         self.assertGreater(len(r["expansion"]), 5)
         self.assertFalse(r["expansion_held"])  # a ramp: its rising rows
-        for U, eps, lo, hi, drift in r["expansion"]:
+        for U, eps, lo, hi, drift, law in r["expansion"]:
             self.assertTrue(lo <= eps <= hi, f"U {U}: eps {eps} outside {lo}-{hi}")
             self.assertTrue(math.isnan(drift))
+            self.assertAlmostEqual(law, drag_laws.expanded_voidage("di_felice", D, RHO_P, RHO_F, MU, U, G),
+                                   delta=1e-12)
 
     def test_plateau_short_of_the_weight_reads_so(self):
         umf, r = self.rows(0.97)
@@ -117,13 +119,13 @@ class FluidisedBedRows(unittest.TestCase):
             settled = stepped_run(d, 1.0)
             r = fluidised_bed.rows(d)
         self.assertTrue(r["expansion_held"])
-        held = [(U, eps) for U, eps, _, _, _ in r["expansion"]]
+        held = [(U, eps) for U, eps, _, _, _, _ in r["expansion"]]
         expected = [(u, e) for u, e in settled if fluidisation.EXPANDED[0] * r["U_mf"] <= u]
         self.assertEqual([U for U, _ in held], [u for u, _ in expected])
         self.assertGreaterEqual(len(held), 2)
         for (U, eps), (_, e) in zip(held, expected):  # second half: within exp(-5) of settled
             self.assertAlmostEqual(eps, e, delta=0.01 * e)
-        for _, _, _, _, drift in r["expansion"]:
+        for _, _, _, _, drift, _ in r["expansion"]:
             self.assertLess(abs(drift), 0.01)
         with tempfile.TemporaryDirectory() as d:  # holds shorter than MIN_HOLD: the ramp's rows
             stepped_run(d, 0.3)
