@@ -211,8 +211,9 @@ TEST(SceneKeys, AValueOutsideItsRangeIsRefused) {
         } catch (const SceneError& e) {
           const std::string msg = e.what();
           EXPECT_NE(msg.find("key '" + path), std::string::npos) << msg;
-          if (k->extra_limits.empty() && !whole)
+          if (k->extra_limits.empty() && !whole) {
             EXPECT_NE(msg.find(range_text(k->range)), std::string::npos) << msg;
+          }
         }
       }
     }
