@@ -29,6 +29,28 @@ std::mt19937_64 stream(std::int64_t seed, std::uint32_t which) {
   return std::mt19937_64(seq);
 }
 
+// Where the centre of a sphere of radius r may lie, [lo, lo + width) along each axis: the
+// whole span of an axis the group fills periodically, else the region less r at each face.
+struct CentreRange {
+  std::array<double, 3> lo{}, width{};
+
+  std::array<double, 3> draw(std::mt19937_64& rng) const {
+    std::array<double, 3> c{};
+    for (int a = 0; a < 3; ++a) c[a] = lo[a] + width[a] * uniform01(rng);
+    return c;
+  }
+};
+
+CentreRange centre_range(const ParticleGroupSpec& g, const std::array<double, 3>& span,
+                         const std::array<bool, 3>& full, double r) {
+  CentreRange out;
+  for (int a = 0; a < 3; ++a) {
+    out.lo[a] = full[a] ? g.lo[a] : g.lo[a] + r;
+    out.width[a] = full[a] ? span[a] : span[a] - 2.0 * r;
+  }
+  return out;
+}
+
 }  // namespace
 
 RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles& existing) {
@@ -127,6 +149,7 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
       const double r = 0.5 * diameter[i];
       out.radius.push_back(r);
       out.species.push_back(species[i]);
+      const CentreRange range = centre_range(g, span, full, r);
       std::array<double, 3> c{};
       std::uint64_t tries = 0;
       do {  // outside the earlier groups' spheres, which do not move
@@ -134,9 +157,7 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
           fail("voidage", fmt::format("{} random centres for sphere {} all overlapped an earlier "
                                       "group's spheres: the region is full",
                                       tries - 1, k));
-        for (int a = 0; a < 3; ++a)
-          c[a] = full[a] ? g.lo[a] + span[a] * uniform01(position_rng)
-                         : g.lo[a] + r + (span[a] - 2.0 * r) * uniform01(position_rng);
+        c = range.draw(position_rng);
       } while (grid.overlaps(c[0], c[1], c[2], r));
       out.attempts += tries;
       out.x.push_back(c[0]);
@@ -166,11 +187,7 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t i = order[k];
     const double r = 0.5 * diameter[i];
-    std::array<double, 3> lo{}, width{};
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = full[a] ? g.lo[a] : g.lo[a] + r;
-      width[a] = full[a] ? span[a] : span[a] - 2.0 * r;
-    }
+    const CentreRange range = centre_range(g, span, full, r);
     std::uint64_t tries = 0;
     for (;;) {
       if (tries == kRsaAttemptsPerSphere)
@@ -186,9 +203,7 @@ RandomPacking random_packing(const Scene& sc, std::size_t gi, const DemParticles
                                     v_placed / v_region, k, n, tries, 2.0 * r, 1.0 - g.voidage,
                                     g.voidage, kRsaSaturation, 1.0 - kRsaSaturation));
       ++tries;
-      const double x = lo[0] + width[0] * uniform01(position_rng);
-      const double y = lo[1] + width[1] * uniform01(position_rng);
-      const double z = lo[2] + width[2] * uniform01(position_rng);
+      const auto [x, y, z] = range.draw(position_rng);
       if (grid.overlaps(x, y, z, r)) continue;
       grid.insert(x, y, z, r);
       out.x.push_back(x);
