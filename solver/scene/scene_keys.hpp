@@ -192,12 +192,12 @@ inline constexpr SceneKey kSceneKeys[] = {
     // ---- drag, coupling
     key_rows::map("drag", "the drag law"),
     key_rows::choice("drag.law", drag::kDragLawNames.names, "di_felice",
-        "f_d(ε, u_s) of 2.68; the laws are in the table below (`coupling/drag_law_table.hpp`)"),
+        "f_d(ε, u_s) of 2.68; the laws are in the table below (`coupling/drag_law_table.hpp`); a law without a voidage function only where every group's ε ≥ 0.99, `none` only where every group is rigid or fixed (`scene/scene_limits.hpp`)"),
     key_rows::map("coupling", "how the fluid and the spheres exchange momentum"),
     key_rows::number("coupling.voidage_floor", "–", 0.3, closed(0.05, 0.95),
         "floor on ε_a of 2.50 (the log column `voidage_clamped` counts its hits)"),
     key_rows::choice("coupling.voidage_smoothing", key_choices::kVoidageSmoothing, "single",
-        "`single` (2.50), or `double` (thesis §3.4, 3.8–3.10): the big species smoothed apart with their own kernel, then the fluid's"),
+        "`single` (2.50), or `double` (thesis §3.4, 3.8–3.10): the big species smoothed apart with their own kernel, then the fluid's; `double` only where every group is rigid or fixed under gravity (it forces the interpolated coupling, unstable over a packed bed)"),
     key_rows::names("coupling.big_species", nullptr, "the species smoothed apart")
         .when("voidage_smoothing=double").note("the species with the largest diameter"),
     key_rows::number("coupling.big_h_over_d", "–", 1.5, closed(0.5, 5),

@@ -18,6 +18,54 @@ constexpr double kWeaklyCompressibleLimit = 0.01;
 constexpr double kOverlapLimit = 0.1;  // of d
 }  // namespace
 
+namespace {
+
+// The couplings a scene's spheres cannot run with: a drag law without a voidage function
+// among spheres closer than a lone one's (its drag would not rise with concentration,
+// 2.73/2.75 against 2.76), no drag on spheres free to move (nothing couples them), and the
+// double smoothing over spheres that can settle into a bed (it forces the interpolated
+// coupling, linearly unstable over a packed bed: packed_bed_stability_validation).
+void append_coupling_breaches(const Scene& sc, std::vector<LimitBreach>& out) {
+  const drag::DragLawInfo& law = drag::drag_law_info(sc.drag);
+  const bool no_drag = std::holds_alternative<drag::NoDrag>(sc.drag);
+  for (std::size_t k = 0; k < sc.particles.size(); ++k) {
+    const ParticleGroupSpec& g = sc.particles[k];
+    const double eps = g.kind == ParticleGroupSpec::Kind::kSingle ? 1.0 : g.voidage;
+    if (!law.voidage_function && !no_drag && eps < kLoneSphereVoidage) {
+      std::vector<std::string> valid;
+      for (const drag::DragLawInfo& other : drag::kDragLaws)
+        if (other.voidage_function) valid.push_back(other.name);
+      out.push_back(
+          {"drag.law",
+           fmt::format("particles.{} sits at voidage {} but {} ({}) has no voidage function: "
+                       "its drag is a lone sphere's at any concentration, so the group would "
+                       "settle as fast as one sphere; allowed: {} only where every group's "
+                       "voidage is >= {} (single spheres); choose one of {}",
+                       k, eps, law.name, law.equations, law.name, kLoneSphereVoidage,
+                       fmt::join(valid, ", "))});
+    }
+    if (no_drag && !g.rigid)  // (the loader makes a fixed group rigid)
+      out.push_back(
+          {"drag.law", fmt::format("particles.{} is free to move but drag.law none couples no "
+                                   "sphere to the fluid (a measuring device for fixed beds); "
+                                   "allowed: none only when every group is rigid or fixed; "
+                                   "choose a drag law, or set particles.{}.fixed",
+                                   k, k)});
+  }
+  const bool mobile = std::any_of(sc.particles.begin(), sc.particles.end(),
+                                  [](const ParticleGroupSpec& g) { return !g.rigid; });
+  if (sc.double_smoothing.enabled && mobile && sc.gravity_magnitude() > 0.0)
+    out.push_back(
+        {"coupling.voidage_smoothing",
+         "double smoothing forces the interpolated pressure coupling, which is linearly "
+         "unstable over the packed bed that mobile spheres settle into (the fluid's kinetic "
+         "energy grows without bound there: packed_bed_stability_validation); allowed: double "
+         "only when every particles group is rigid or fixed (constant-porosity blocks); use "
+         "single"});
+}
+
+}  // namespace
+
 double sphere_kernel_share(double d, double h) {
   return M_PI / 6.0 * d * d * d * kernel::w(0.0, h);
 }
@@ -72,6 +120,7 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
       }
     }
   }
+  if (fl.enabled) append_coupling_breaches(sc, out);
   if (fl.enabled) {
     const SoundSpeedReport c = sound_speed_report(sc);
     if (c.expected_density_error() > kWeaklyCompressibleLimit * (1.0 + 1e-9))

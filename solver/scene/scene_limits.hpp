@@ -15,6 +15,10 @@
 //  - the sound speed's expected density error (scene/sound_speed_rule.hpp) within the
 //    weakly compressible limit, 1 %, and the compression's share of the lightest
 //    species' buoyant weight within kBuoyancyErrorLimit (2 %);
+//  - the coupling the spheres can run with: a drag law with a voidage function for any
+//    group at voidage < kLoneSphereVoidage, drag at all for spheres free to move, and the
+//    single smoothing for spheres that can settle into a bed (the double one forces the
+//    interpolated coupling, unstable over a packed bed);
 //  - the spring's expected largest overlap (scene/contact_stiffness_rule.hpp) within
 //    10 % of d, past which a soft-sphere contact no longer models two touching spheres
 //    (not for blocks whose spheres all move rigidly).
@@ -28,6 +32,9 @@ namespace sphdem {
 // The share of its drag kernel (of width h) a sphere of diameter d fills, V W(0), and
 // the largest a scene may have.
 inline constexpr double kSelfVoidageLimit = 0.025;
+// A group at this voidage or above is a few lone spheres: a law without a voidage function
+// (Stokes, Coulson-Richardson) is the right one there.
+inline constexpr double kLoneSphereVoidage = 0.99;
 double sphere_kernel_share(double d, double h);
 
 struct LimitBreach {

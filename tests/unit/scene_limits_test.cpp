@@ -87,3 +87,46 @@ TEST(SceneLimits, ASpringTooSoftForTheImpactIsRefused) {
                    load_scene(SPHDEM_CASES_DIR "/single_particle.yaml", {"fluid.sound_speed=2"})),
                SceneError);
 }
+
+namespace {
+std::vector<LimitBreach> case_breaches(const std::string& name, std::vector<std::string> sets) {
+  return scene_limit_breaches(load_scene(std::string(SPHDEM_CASES_DIR "/") + name, sets));
+}
+}  // namespace
+
+TEST(SceneLimits, ALawWithoutAVoidageFunctionIsRefusedForASuspension) {
+  // a random group at eps 0.9: Stokes' and Coulson-Richardson's drag do not rise with it
+  for (const char* law : {"stokes", "coulson_richardson"}) {
+    const std::string set = std::string("drag.law=") + law;
+    const auto b = case_breaches("suspension_monodisperse.yaml", {set});
+    ASSERT_TRUE(names_key(b, "drag.law")) << law;
+    EXPECT_NE(b[0].message.find("particles.0 sits at voidage"), std::string::npos) << b[0].message;
+    // a group of a few lone spheres keeps them
+    EXPECT_FALSE(
+        names_key(case_breaches("suspension_monodisperse.yaml", {set, "particles.0.voidage=0.995"}),
+                  "drag.law"))
+        << law;
+  }
+  EXPECT_FALSE(names_key(case_breaches("suspension_monodisperse.yaml", {}), "drag.law"));
+}
+
+TEST(SceneLimits, NoDragIsRefusedForSpheresFreeToMove) {
+  const auto b = case_breaches("suspension_monodisperse.yaml", {"drag.law=none"});
+  ASSERT_TRUE(names_key(b, "drag.law"));
+  EXPECT_NE(b[0].message.find("particles.0 is free to move"), std::string::npos) << b[0].message;
+  for (const char* held : {"particles.0.rigid=true", "particles.0.fixed=true"})
+    EXPECT_FALSE(names_key(case_breaches("suspension_monodisperse.yaml", {"drag.law=none", held}),
+                           "drag.law"))
+        << held;
+}
+
+TEST(SceneLimits, DoubleSmoothingIsRefusedOverSpheresThatFormABed) {
+  const std::string dbl = "coupling.voidage_smoothing=double";
+  EXPECT_TRUE(
+      names_key(case_breaches("suspension_bidisperse.yaml", {dbl}), "coupling.voidage_smoothing"));
+  // the thesis's constant-porosity blocks move rigidly: no bed forms
+  EXPECT_FALSE(names_key(case_breaches("block_bidisperse_150_100.yaml", {dbl}),
+                         "coupling.voidage_smoothing"));
+  EXPECT_FALSE(
+      names_key(case_breaches("suspension_bidisperse.yaml", {}), "coupling.voidage_smoothing"));
+}

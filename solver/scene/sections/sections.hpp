@@ -22,7 +22,7 @@ struct ReadContext {
   SceneProblems& problems;
   const FidelityPreset* preset = nullptr;  // the scene's fidelity: its values are defaults
   bool box_ok = true;                      // domain.size read without a problem
-  std::vector<bool> species_ok;            // per species: read without a problem
+  std::vector<bool> species_ok = {};       // per species: read without a problem
   bool resolution_given = false;           // fluid.resolution in the file (not a preset's)
   bool stiffness_auto = true;              // contact.stiffness: auto
   bool kernel_auto = true;                 // coupling.sphere_kernel_scale: auto
