@@ -13,6 +13,8 @@ __attribute__((simd("notinbranch"))) double pow(double, double) noexcept;
 #include <algorithm>
 #include <cmath>
 
+#include "coupling/drag_linearisation.hpp"
+
 namespace sphdem {
 namespace {
 
@@ -158,6 +160,24 @@ void drag_coefficients(const drag::DragLaw& law, const DemParticles& s, const dr
           coefficients_avx512(l, fields, fluid, begin, end, c);
         else
           coefficients_scalar(l, fields, fluid, begin, end, c);
+      },
+      law);
+}
+
+void drag_gains(const drag::DragLaw& law, const DemParticles& s, const drag::Fluid& fluid,
+                std::size_t begin, std::size_t end, double* gain) {
+  const SphereFields f(s);
+  std::visit(
+      [&](const auto& l) {
+        for (std::size_t j = begin; j < end; ++j) {
+          const double eps = slip_voidage(f, j);
+          const double usx = eps * (f.ufx[j] - f.vx[j]), usy = eps * (f.ufy[j] - f.vy[j]),
+                       usz = eps * (f.ufz[j] - f.vz[j]);
+          const double us = std::sqrt(usx * usx + usy * usy + usz * usz);
+          const double c =
+              drag::linearised_coefficient(l, eps, us, 2.0 * f.radius[j], f.d_sauter[j], fluid);
+          gain[j] = f.shepard[j] > 0.0 ? c * f.eps[j] : 0.0;
+        }
       },
       law);
 }

@@ -21,6 +21,13 @@ namespace sphdem {
 void drag_coefficients(const drag::DragLaw& law, const DemParticles& s, const drag::Fluid& fluid,
                        std::size_t begin, std::size_t end, double* c, PairIsa isa);
 
+// The drag exchange's gains g_j = eps_j d|f_j|/d|u_s| of spheres [begin, end) at their
+// current velocities: d f_j / d u_f along the slip (2.68, 2.74) with the law linearised
+// (coupling/drag_linearisation.hpp), so that the exchange's explicit limit and its
+// backward Euler hold for the fastest rate the law relaxes at, not its secant c eps.
+void drag_gains(const drag::DragLaw& law, const DemParticles& s, const drag::Fluid& fluid,
+                std::size_t begin, std::size_t end, double* gain);
+
 // What a DEM sub-step does with the new fluid force besides keeping it in (fx, fy, fz):
 // with `accumulate_mean`, the trapezoid of the sub-step, weight (f_old + f_new), goes to
 // the mean force fm (the variational coupling's constant pressure part, 2 V g, not in it).

@@ -187,9 +187,12 @@ double DemSubstepper::fluid_drag_time() const {
   if (!p_.fluid_force) return t_min;
   const long n = static_cast<long>(s.n_owned);
   const double rho_f = p_.fluid.rho;
+  std::vector<double> gains(s.n_owned);
+  sphdem::drag_gains(p_.drag, s, p_.fluid, 0, s.n_owned, gains.data());
+  const double* gain = gains.data();
 #pragma omp parallel for schedule(static) reduction(min : t_min) if (n > kMinParallelSpheres)
   for (long j = 0; j < n; ++j) {
-    const double rate = s.drag_c[j] * s.eps[j] / s.mass[j];  // 1 / tau_s at its voidage and Re
+    const double rate = gain[j] / s.mass[j];  // 1 / tau_s at its voidage and Re, linearised
     if (!(rate > 0.0)) continue;
     const double r = (1.0 - s.eps[j]) * s.mass[j] / (s.volume(j) * s.eps[j] * rho_f);
     t_min = std::min(t_min, std::log1p(1.0 / r) / rate);
@@ -201,7 +204,7 @@ const std::vector<double>& DemSubstepper::update_drag_gains() {
   const DemParticles& s = s_;
   drag_gain_.assign(s.size(), 0.0);
   if (!p_.fluid_force) return drag_gain_;
-  for (std::size_t j = 0; j < s.n_owned; ++j) drag_gain_[j] = s.drag_c[j] * s.eps[j];
+  sphdem::drag_gains(p_.drag, s, p_.fluid, 0, s.n_owned, drag_gain_.data());
   lists_.halo().fill(drag_gain_);
   return drag_gain_;
 }

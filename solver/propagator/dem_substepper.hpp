@@ -53,12 +53,13 @@ class DemSubstepper {
   // r times the sphere's rate, r = (1 - eps) rho_p / (eps rho_f). A sphere relaxing toward
   // fluid held over a step, and the fluid getting the impulse back, multiply their slip by
   // 1 - (1 + r)(1 - exp(-dt rate)), which stays in [0, 1) (no overshoot) for
-  // dt <= ln(1 + 1/r) / rate. The smallest such dt over the spheres of the last force pass
-  // (infinity without drag): what an explicit exchange would need; `check` prints it (the
-  // solver's exchange is semi-implicit, coupling/drag_exchange.hpp).
+  // dt <= ln(1 + 1/r) / rate, the rate linearised (coupling/drag_linearisation.hpp). The
+  // smallest such dt over the spheres at their current slip (infinity without drag): what
+  // an explicit exchange would need; `check` prints it (the solver's exchange is
+  // semi-implicit, coupling/drag_exchange.hpp).
   double fluid_drag_time() const;
-  // d f_j / d u_f = c_j eps_j (2.68, 2.74) of every sphere, owned and halo images, at the
-  // last force pass (0 before the first and without fluid): the gains of the drag
+  // d f_j / d u_f = eps_j d|f_j|/d|u_s| (2.68, 2.74, the law linearised) of every sphere,
+  // owned and halo images, at its current slip (0 without fluid): the gains of the drag
   // exchange (coupling/drag_exchange.hpp); update_drag_gains() computes them.
   const std::vector<double>& update_drag_gains();
   const std::vector<double>& drag_gains() const { return drag_gain_; }

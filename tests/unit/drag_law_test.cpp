@@ -11,7 +11,9 @@
 #include <variant>
 #include <vector>
 
+#include "coupling/drag_exchange.hpp"
 #include "coupling/drag_law_table.hpp"
+#include "coupling/drag_linearisation.hpp"
 #include "coupling/fluid_force.hpp"
 
 namespace {
@@ -496,3 +498,102 @@ TEST(DragLaw, FluidForcePassMatchesEq268WithEitherInstructionSet) {
         law);
   }
 }
+
+namespace {
+
+// The linearised rate d|f|/d|u_s| (coupling/drag_linearisation.hpp) against its derivative
+// worked apart: Stokes' is c itself; Di Felice's f = (pi/8) rho d^2 s^2 eps^-xi(Re) u with
+// s = 0.63 + 4.8/sqrt(Re) gives d ln f / d ln u = 1 + 0.63/s + ln(eps) 0.65 l exp(-l^2/2) / ln 10,
+// l = 1.5 - log10 Re (2.76-2.79): 1.90 at Re 1000 and eps 0.5, 1.01 at Re 0.01.
+TEST(DragLaw, LinearisedRateMatchesTheDerivativeWorkedApart) {
+  const Stokes stokes;
+  const DiFeliceDallavalle di_felice;
+  for (double re : {1e-3, 1.0, 1e3}) {
+    const double u = speed_for(re);
+    EXPECT_NEAR(linearised_coefficient(stokes, 0.5, u, kD, kD, kWater) /
+                    stokes.coefficient(0.5, u, kD, kWater),
+                1.0, 1e-9);
+  }
+  for (double eps : {1.0, 0.5}) {
+    for (double re : {0.01, 1.0, 1e3}) {
+      const double u = speed_for(re), s = 0.63 + 4.8 / std::sqrt(re), l = 1.5 - std::log10(re);
+      const double slope =
+          1.0 + 0.63 / s + std::log(eps) * 0.65 * l * std::exp(-0.5 * l * l) / std::log(10.0);
+      const double c = di_felice.coefficient(eps, u, kD, kWater);
+      EXPECT_NEAR(linearised_coefficient(di_felice, eps, u, kD, kD, kWater) / c, slope, 1e-6)
+          << "eps " << eps << ", Re " << re;
+      if (re == 1e3 && eps == 0.5) {
+        EXPECT_NEAR(slope, 1.90, 0.01);
+      }
+    }
+  }
+  // at zero slip, the Stokes limit's coefficient
+  EXPECT_EQ(linearised_coefficient(di_felice, 0.7, 0.0, kD, kD, kWater),
+            di_felice.coefficient(0.7, 0.0, kD, kWater));
+}
+
+// The drag exchange's gains (coupling/fluid_force.hpp) are eps times the linearised rate at
+// each sphere's slip, 0 where no fluid reaches it, for every law.
+TEST(DragLaw, DragGainsAreTheLinearisedRate) {
+  const sphdem::DemParticles s = drag_test_spheres();
+  for (std::size_t law_index = 0; law_index < kDragLawCount; ++law_index) {
+    std::vector<double> gain(s.n_owned, -1.0);
+    sphdem::drag_gains(kLaws[law_index], s, kWater, 0, s.n_owned, gain.data());
+    std::visit(
+        [&](const auto& l) {
+          for (std::size_t j = 0; j < s.n_owned; ++j) {
+            const double e = s.shepard[j] > 0.0 ? s.eps[j] : 1.0;
+            const double dx = e * (s.ufx[j] - s.vx[j]), dy = e * (s.ufy[j] - s.vy[j]),
+                         dz = e * (s.ufz[j] - s.vz[j]);
+            const double us = std::sqrt(dx * dx + dy * dy + dz * dz);
+            const double expected =
+                s.shepard[j] > 0.0 ? s.eps[j] * linearised_coefficient(l, e, us, 2.0 * s.radius[j],
+                                                                       s.d_sauter[j], kWater)
+                                   : 0.0;
+            EXPECT_EQ(gain[j], expected) << kDragLaws[law_index].name << " sphere " << j;
+          }
+        },
+        kLaws[law_index]);
+  }
+}
+
+// The fluid's side of the drag exchange at 0.5, 1 and 1.5 times its explicit bound
+// dt = sphdem::kExplicitDragLimit / K, K the rate from the gains: a fluid parcel of mass M held at
+// a steady slip w* (Re 1000, eps 0.5, Di Felice: the law relaxes 1.9 times faster than its
+// secant c eps / M) by a force A, nudged off it and stepped once by the corrector
+// (coupling/drag_exchange.hpp). Its departure from w* decays by 1 - dt K_t up to the bound
+// (>= 0.5, as the explicit limit promises) and by 0.5 / (0.5 + dt K_t) past it (no
+// overshoot). With the secant rate as K the first would be 0.05 and the second -0.14.
+TEST(DragLaw, DragExchangeHoldsItsBoundAtTheLawsLinearisedRate) {
+  const DragLaw law = DiFeliceDallavalle{};
+  const double d = 2e-3, eps = 0.5, re = 1e3;
+  const double w_star = re * kWater.mu / (kWater.rho * d) / eps;  // u_s = eps w
+  const double volume = 1e-9, M = kWater.rho * volume;
+  sphdem::DemParticles s;
+  s.resize(1);
+  s.n_owned = 1;
+  s.radius[0] = 0.5 * d, s.d_sauter[0] = d, s.eps[0] = eps, s.shepard[0] = 1.0;
+  s.ufz[0] = w_star;
+  double gain = 0;
+  sphdem::drag_gains(law, s, kWater, 0, 1, &gain);
+  const double K = gain / M;
+  const auto pull = [&](double w) {  // the drag's acceleration of the parcel at slip w
+    return std::visit([&](const auto& l) { return l.coefficient(eps, eps * w, d, kWater); }, law) *
+           eps * w / M;
+  };
+  const double A = pull(w_star);
+  for (double q : {0.5, 1.0, 1.5}) {
+    const double dt = q * sphdem::kExplicitDragLimit / K;
+    const double w0 = w_star * (1.0 + 1e-5);
+    double ax = 0, ay = 0, az = A - pull(w0), phi[3];
+    sphdem::take_drag_exchange(dt, K, volume, ax, ay, az, phi);
+    const double decay = (w0 + dt * az - w_star) / (w0 - w_star);
+    EXPECT_GT(decay, 0.0) << q << " x the bound: the slip overshoots";
+    EXPECT_LT(decay, 1.0) << q;
+    if (q <= 1.0) {
+      EXPECT_GT(decay, 1.0 - sphdem::kExplicitDragLimit - 1e-3) << q << " x the bound";
+    }
+  }
+}
+
+}  // namespace
