@@ -40,7 +40,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import report  # noqa: E402
+from vreport.figures import Context  # noqa: E402
+from vreport.rows import Row, mark_safeguard_hits, safeguard_rows  # noqa: E402
+from vreport.runs import Run, execute  # noqa: E402
+from vreport.scenes import SCENES  # noqa: E402
 
 
 def parse_vary(text):
@@ -62,10 +65,10 @@ def parse_set(text):
 
 
 def find_scene(name):
-    for s in report.SCENES:
+    for s in SCENES:
         if s.name == name or os.path.normpath(getattr(s, "case", "")) == os.path.normpath(name):
             return s
-    names = ", ".join(s.name for s in report.SCENES)
+    names = ", ".join(s.name for s in SCENES)
     sys.exit(f"sweep.py: no scene {name!r} in validation/report.py (scenes: {names})")
 
 
@@ -107,15 +110,15 @@ def run_point(index, values, scene, args, sphdem, env):
         sets = dict(run.sets)
         sets.update(args.fixed)
         sets.update(values)
-        varied = report.Run(run.key, run.case, sets, run.insitu)
-        results[run.key] = report.execute(varied, sphdem, runs_dir, args.reuse, args.nice, env)
-    ctx = report.Context(fig_dir)
+        varied = Run(run.key, run.case, sets, run.insitu)
+        results[run.key] = execute(varied, sphdem, runs_dir, args.reuse, args.nice, env)
+    ctx = Context(fig_dir)
     try:
         rows = scene.evaluate(results, ctx)
     except Exception as e:  # noqa: BLE001  a broken evaluation is a failed row
-        rows = [report.Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0)]
-    rows += report.safeguard_rows(scene.name, results)
-    report.mark_safeguard_hits(rows)
+        rows = [Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0)]
+    rows += safeguard_rows(scene.name, results)
+    mark_safeguard_hits(rows)
     return label, results, rows
 
 

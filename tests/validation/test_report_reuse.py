@@ -1,6 +1,7 @@
-"""validation/report.py: a run is reused only when the solver, the scene file and the
-in-situ scripts are the ones it was made with; the safeguard line a run prints at its end is read and marks the
-rows of that run; --strict turns a missed target into a failing exit.
+"""validation/report.py (its package vreport/: runs.py, rows.py): a run is reused only when
+the solver, the scene file and the in-situ scripts are the ones it was made with; the
+safeguard line a run prints at its end is read and marks the rows of that run; --strict
+turns a missed target into a failing exit.
 
 A stand-in `sphdem` (a script that writes a log.csv, prints the safeguard line and counts
 its calls) takes the solver's place, so this runs in a second."""
@@ -14,7 +15,8 @@ import unittest
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "validation"))
-import report  # noqa: E402
+from vreport import runs  # noqa: E402
+from vreport.rows import Row, exit_status, mark_safeguard_hits, safeguard_rows, summary_line  # noqa: E402
 
 FAKE = """#!/bin/sh
 # stand-in sphdem: run CASE --out DIR ...
@@ -37,9 +39,9 @@ class Reuse(unittest.TestCase):
         self.calls = os.path.join(self.tmp, "calls")
         self.sphdem = os.path.join(self.tmp, "sphdem")
         self.write_solver(floor=0)
-        self.old_repo, report.REPO = report.REPO, self.repo
-        self.addCleanup(setattr, report, "REPO", self.old_repo)
-        self.run_ = report.Run("scene_run", "cases/scene.yaml", {"time.end": 0.1})
+        self.old_repo, runs.REPO = runs.REPO, self.repo
+        self.addCleanup(setattr, runs, "REPO", self.old_repo)
+        self.run_ = runs.Run("scene_run", "cases/scene.yaml", {"time.end": 0.1})
         self.runs_dir = os.path.join(self.tmp, "runs")
 
     def write_solver(self, floor, comment=""):
@@ -50,7 +52,7 @@ class Reuse(unittest.TestCase):
         return len(open(self.calls).read().split()) if os.path.exists(self.calls) else 0
 
     def execute(self):
-        return report.execute(self.run_, self.sphdem, self.runs_dir, reuse=True, nice=0)
+        return runs.execute(self.run_, self.sphdem, self.runs_dir, reuse=True, nice=0)
 
     def test_same_solver_and_scene_reuse(self):
         self.execute()
@@ -85,7 +87,7 @@ class Reuse(unittest.TestCase):
         os.makedirs(pipes)
         for name, text in (("interfaces", "import helper\n"), ("helper", "x = 1\n"), ("com_tracks", "y = 2\n")):
             open(os.path.join(pipes, name + ".py"), "w").write(text)
-        self.run_ = report.Run("scene_insitu", "cases/scene.yaml", {"insitu.pipelines": "[interfaces]"}, insitu=True)
+        self.run_ = runs.Run("scene_insitu", "cases/scene.yaml", {"insitu.pipelines": "[interfaces]"}, insitu=True)
         self.execute()
         open(os.path.join(pipes, "com_tracks.py"), "a").write("# not run by this scene\n")
         self.execute()
@@ -99,8 +101,8 @@ class Reuse(unittest.TestCase):
         r = self.execute()
         self.assertEqual(r.safeguards["floor_steps"], 3)
         self.assertEqual(r.safeguards["steps"], 10)
-        rows = [report.Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r)] + report.safeguard_rows("scene", {"k": r})
-        report.mark_safeguard_hits(rows)
+        rows = [Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r)] + safeguard_rows("scene", {"k": r})
+        mark_safeguard_hits(rows)
         self.assertIn("voidage floor in 3", rows[0].note)
         floor_row = [x for x in rows if "Ω clamp" in x.quantity][0]
         self.assertEqual(floor_row.status, "FAIL")       # target 0
@@ -108,8 +110,8 @@ class Reuse(unittest.TestCase):
 
     def test_quiet_run_leaves_rows_alone(self):
         r = self.execute()
-        rows = [report.Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r)]
-        report.mark_safeguard_hits(rows)
+        rows = [Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r)]
+        mark_safeguard_hits(rows)
         self.assertEqual(rows[0].note, "")
 
 
@@ -122,9 +124,9 @@ class RunDir(unittest.TestCase):
         self.addCleanup(shutil.rmtree, self.tmp)
         os.makedirs(os.path.join(self.tmp, "cases"))
         open(os.path.join(self.tmp, "cases", "scene.yaml"), "w").write("name: scene\n")
-        self.old_repo, report.REPO = report.REPO, self.tmp
-        self.addCleanup(setattr, report, "REPO", self.old_repo)
-        self.run_ = report.Run("scene_long", "cases/scene.yaml", {}, long=True)
+        self.old_repo, runs.REPO = runs.REPO, self.tmp
+        self.addCleanup(setattr, runs, "REPO", self.old_repo)
+        self.run_ = runs.Run("scene_long", "cases/scene.yaml", {}, long=True)
 
     def made(self, name, reached, end=1.0):
         d = tempfile.mkdtemp(dir=self.tmp)
@@ -133,14 +135,14 @@ class RunDir(unittest.TestCase):
         return d
 
     def test_finished_and_stopped(self):
-        self.assertTrue(report.adopt(self.run_, self.made("scene", 1.0)).ok)
-        stopped = report.adopt(self.run_, self.made("scene", 0.4))
+        self.assertTrue(runs.adopt(self.run_, self.made("scene", 1.0)).ok)
+        stopped = runs.adopt(self.run_, self.made("scene", 0.4))
         self.assertFalse(stopped.ok)
         self.assertEqual(stopped.log["time"][-1], 0.4)
 
     def test_other_scene_refused(self):
         with self.assertRaises(SystemExit) as e:
-            report.adopt(self.run_, self.made("other", 1.0))
+            runs.adopt(self.run_, self.made("other", 1.0))
         self.assertIn("its scene is 'other'", str(e.exception))
 
 
@@ -148,17 +150,17 @@ class Strict(unittest.TestCase):
     def rows(self, *statuses):
         out = []
         for s in statuses:
-            r = report.Row("scene", "q", "1", "src", "1", 0.0, 0.01)
+            r = Row("scene", "q", "1", "src", "1", 0.0, 0.01)
             r.status = s
             out.append(r)
         return out
 
     def test_miss_fails_only_when_strict(self):
         rows = self.rows("PASS", "MISS", "INFO")
-        self.assertEqual(report.exit_status(rows, strict=False), 0)
-        self.assertEqual(report.exit_status(rows, strict=True), 1)
-        self.assertEqual(report.exit_status(self.rows("PASS", "FAIL"), strict=False), 1)
-        self.assertEqual(report.summary_line(rows), "3 rows: 1 pass, 0 fail, 1 miss, 1 informative, 0 skipped")
+        self.assertEqual(exit_status(rows, strict=False), 0)
+        self.assertEqual(exit_status(rows, strict=True), 1)
+        self.assertEqual(exit_status(self.rows("PASS", "FAIL"), strict=False), 1)
+        self.assertEqual(summary_line(rows), "3 rows: 1 pass, 0 fail, 1 miss, 1 informative, 0 skipped")
 
 
 if __name__ == "__main__":
