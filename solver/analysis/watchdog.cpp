@@ -65,11 +65,16 @@ std::string contact_cause(const Simulation& sim) {
          "stiffness: auto, lower contact.max_overlap)";
 }
 
+// A fluid particle among packed spheres, or a dense suspension's: its voidage below this
+// (the first layer over a wall under a bed at 0.48 reads 0.67, its kernel half empty).
+constexpr double kPackedVoidage = 0.7;
+
 // Why the fluid went wrong, most likely first: a sound speed too low for the scene
 // (its expected density error, scene/sound_speed_rule.hpp, past the weakly compressible
-// 1 %); a CFL number above the tested range; a flow faster than the scene's u_m (Mach^2
-// of the fastest fluid past 0.01); else an unstable SPH step.
-std::optional<std::string> named_fluid_cause(const Simulation& sim) {
+// 1 %); a CFL number above the tested range; the coupling, where the particle `at` (-1:
+// none) sits among packed spheres; a flow faster than the scene's u_m (Mach^2 of the
+// fastest fluid past 0.01); else an unstable SPH step.
+std::optional<std::string> named_fluid_cause(const Simulation& sim, long at) {
   const FluidParticles& f = sim.fluid();
   const Scene& sc = sim.scene();
   const SoundSpeedReport c = sound_speed_report(sc);
@@ -84,6 +89,20 @@ std::optional<std::string> named_fluid_cause(const Simulation& sim) {
         "the SPH step is unstable at CFL {} (dt = {:.3g} s; the presets use 0.2-0.3): lower "
         "time.cfl",
         sc.time.cfl, sim.dt_sph());
+  if (at >= 0 && f.kind[at] == kFluid && f.eps[at] < kPackedVoidage) {
+    if (sc.pressure_coupling == PressureCoupling::kInterpolated)
+      return fmt::format(
+          "the interpolated pressure coupling is linearly unstable over packed spheres (voidage "
+          "{:.3g} here; packed_bed_stability_validation): coupling.pressure_coupling: "
+          "variational (not with coupling.voidage_smoothing: double)",
+          f.eps[at]);
+    return fmt::format(
+        "the fluid pushed through the packed spheres around it (voidage {:.3g}): its Darcy "
+        "pressure grows as (1 - eps)^2 / (eps^3 d^2), which the automatic c0 does not count: "
+        "raise fluid.sound_speed_factor (a random suspension of 50 um glass at eps 0.5 needed "
+        "40-80, bench/TRADEOFF.md)",
+        f.eps[at]);
+  }
   double v2 = 0.0;
   for (std::size_t a = 0; a < f.n_owned; ++a)
     if (f.kind[a] == kFluid && std::isfinite(f.vx[a] + f.vy[a] + f.vz[a]))
@@ -97,8 +116,8 @@ std::optional<std::string> named_fluid_cause(const Simulation& sim) {
   return std::nullopt;
 }
 
-std::string fluid_cause(const Simulation& sim) {
-  if (auto named = named_fluid_cause(sim)) return *named;
+std::string fluid_cause(const Simulation& sim, long at = -1) {
+  if (auto named = named_fluid_cause(sim, at)) return *named;
   return fmt::format("the SPH step is unstable (c0 = {:.3g} m/s, dt = {:.3g} s): lower time.cfl",
                      sim.scene().fluid.sound_speed, sim.dt_sph());
 }
@@ -109,13 +128,14 @@ std::string instability_cause(const Simulation& sim, const std::string& otherwis
   const double per_contact = sim.contact_time() / std::max(sim.dt_dem(), 1e-300);
   if (sim.spheres().n_owned > 0 && per_contact < kFewSubSteps) return contact_cause(sim);
   if (sim.fluid_count() > 0)
-    if (auto named = named_fluid_cause(sim)) return *named;
+    if (auto named = named_fluid_cause(sim, -1)) return *named;
   return otherwise;
 }
 
 }  // namespace
 
-std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const WatchdogSpec& limits) {
+std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const WatchdogSpec& limits,
+                                            WatchdogReading* reading) {
   if (!limits.enabled) return std::nullopt;
   const FluidParticles& f = sim.fluid();
   const DemParticles& s = sim.spheres();
@@ -165,6 +185,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
       worst_overlap_at = j;
     }
   }
+  if (reading) *reading = WatchdogReading{worst_density, worst_overlap};
   const double inf = HUGE_VAL;
   if (bad_sphere < ns)
     return sphere_alarm(sim, bad_sphere, "non-finite position or velocity", NAN, inf,
@@ -197,7 +218,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
                         contact_cause(sim));
   if (worst_density > limits.density_error)
     return fluid_alarm(sim, worst_density_at, "density error |rho/(eps rho0) - 1|", worst_density,
-                       limits.density_error, fluid_cause(sim));
+                       limits.density_error, fluid_cause(sim, worst_density_at));
   const double fluid_count = static_cast<double>(std::max<std::size_t>(sim.fluid_count(), 1));
   const double floor_share = sim.voidage_clamped() / fluid_count;
   const double clamp_share = sim.omega_bounded() / fluid_count;

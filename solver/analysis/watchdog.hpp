@@ -2,7 +2,11 @@
 // The run's watchdog: after every step, checks the state for non-finite values,
 // particles that left the domain, overlaps past a bound, density deviations past the
 // weakly compressible limit, and the voidage floor or the Omega clamp biting on more
-// than a small share of the fluid. The first breach is an alarm that names the particle
+// than a small share of the fluid. The causes it names for the fluid: a sound speed too
+// low for the scene, a CFL number past the tested range, the coupling where the fluid
+// sits among packed spheres (the interpolated pressure coupling over a bed, the Darcy
+// pressure of a dense suspension that c0's rule does not count), a flow past u_m, else
+// an unstable SPH step. The first breach is an alarm that names the particle
 // (id, species, position), the quantity, its value and bound, the likely cause and the
 // key to change (run/runner.cpp stops the run and dumps the neighbourhood).
 #include <cstdint>
@@ -32,8 +36,16 @@ struct WatchdogError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The first breach of the limits in the current state (nullopt: all within).
-std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const WatchdogSpec& limits);
+// The worst values of a check, for the warnings (analysis/watchdog_warnings.hpp).
+struct WatchdogReading {
+  double density_error = 0;  // the largest |rho/(eps rho0) - 1| of a fluid particle
+  double overlap = 0;        // the largest overlap / d of a sphere
+};
+
+// The first breach of the limits in the current state (nullopt: all within); the worst
+// values into `reading` when given.
+std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const WatchdogSpec& limits,
+                                            WatchdogReading* reading = nullptr);
 
 // One paragraph for the terminal: step, time, the particle, the quantity, the cause.
 std::string describe_alarm(const WatchdogAlarm& alarm, long step, double time);

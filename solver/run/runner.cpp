@@ -14,6 +14,7 @@
 #include "analysis/neighbourhood_dump.hpp"
 #include "analysis/sediment_output.hpp"
 #include "analysis/watchdog.hpp"
+#include "analysis/watchdog_warnings.hpp"
 #include "coupling/drag_exchange.hpp"
 #include "io/checkpoint_file.hpp"
 #include "propagator/simulation.hpp"
@@ -267,17 +268,28 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
   // Every rank takes the same decision: the watchdog's alarm on any rank stops them all
   // (the lowest alarmed rank's message), a stop request on any rank asks all to stop, and
   // the safeguards' counts are summed: one reduction a step.
+  // the warnings (analysis/watchdog_warnings.hpp) ride on the same reduction
+  WatchdogWarnings warnings(scene);
   auto after_step = [&](int& stop) {
-    const auto alarm = watchdog_check(sim, scene.watchdog);
+    WatchdogReading reading;
+    const auto alarm = watchdog_check(sim, scene.watchdog, &reading);
     std::vector<std::uint64_t> v{
-        alarm ? 1u : 0u, static_cast<std::uint64_t>(opt.stop_requested ? opt.stop_requested() : 0),
-        sim.voidage_clamped(), sim.omega_bounded()};
+        alarm ? 1u : 0u,
+        static_cast<std::uint64_t>(opt.stop_requested ? opt.stop_requested() : 0),
+        sim.voidage_clamped(),
+        sim.omega_bounded(),
+        reading.density_error > warnings.density_warning() ? 1u : 0u,
+        reading.overlap > warnings.expected_overlap() ? 1u : 0u};
     if (comm.parallel()) {
       const std::vector<std::uint64_t> mine = v;
       comm.sum(v);
       v[1] = static_cast<std::uint64_t>(comm.max(static_cast<double>(mine[1])));
     }
     st.safeguards.add(v[2], v[3]);
+    if (scene.watchdog.enabled)
+      for (const std::string& w :
+           warnings.observe({v[4] > 0, v[5] > 0, v[2], v[3]}, sim.step_count(), sim.time()))
+        if (out) *out << "sphdem: warning " << w << "\n" << std::flush;
     stop = static_cast<int>(v[1]);
     if (v[0] == 0) return;
     write_log(diagnostics(sim));

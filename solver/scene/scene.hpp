@@ -125,11 +125,17 @@ struct CheckpointSpec {
   bool at_end = scene_default("checkpoint.at_end") != 0;
 };
 
-// The watchdog's bounds (analysis/watchdog.hpp), checked after every step.
+// The watchdog's bounds (analysis/watchdog.hpp), checked after every step. The density
+// bound's auto: kDensityAlarmFactor x the expected density error of c0, at least the
+// weakly compressible limit kDensityAlarmFloor and at most twice it (a c0 past the limit,
+// which `check` refuses, still alarms there).
+inline constexpr double kDensityAlarmFloor = 0.01;
+inline constexpr double kDensityAlarmFactor = 2.0;
 struct WatchdogSpec {
   bool enabled = scene_default("watchdog.enabled") != 0;
-  double density_error = scene_default("watchdog.density_error");  // |rho/(eps rho0) - 1|
-  double overlap = scene_default("watchdog.overlap");              // largest overlap / d
+  // |rho/(eps rho0) - 1|; auto: resolved by the loader (kDensityAlarm*), the floor until then
+  double density_error = kDensityAlarmFloor;
+  double overlap = scene_default("watchdog.overlap");  // largest overlap / d
   // share of the fluid held by the voidage floor or Omega clamp
   double safeguard_share = scene_default("watchdog.safeguard_share");
 };

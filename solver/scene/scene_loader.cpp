@@ -238,6 +238,10 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
     finite("contact.stiffness", c.k,
            "contact.max_overlap, the species, the groups' speeds, gravity and the fluid");
   }
+  if (cx.density_alarm_auto)
+    sc.watchdog.density_error =
+        std::clamp(kDensityAlarmFactor * sound_speed_report(sc).expected_density_error(),
+                   kDensityAlarmFloor, kDensityAlarmFactor * kDensityAlarmFloor);
   if (sc.output.log_interval <= 0) sc.output.log_interval = sc.time.end / 200.0;
   if (sc.insitu.every <= 0) sc.insitu.every = sc.time.end / 50.0;
   if (sc.insitu.grid_spacing <= 0) sc.insitu.grid_spacing = sc.fluid.spacing;

@@ -10,9 +10,11 @@
 #include <optional>
 #include <string>
 
+#include "analysis/watchdog_warnings.hpp"
 #include "propagator/simulation.hpp"
 #include "run/runner.hpp"
 #include "scene/scene.hpp"
+#include "scene/sound_speed_rule.hpp"
 
 using namespace sphdem;
 
@@ -75,7 +77,7 @@ TEST(Watchdog, ASpringTooSoftForTheLoad) {
   const auto alarm = run_until_alarm(sc, 20000);
   ASSERT_TRUE(alarm);
   EXPECT_EQ(alarm->quantity, "overlap / d");
-  EXPECT_GT(alarm->value, 0.2);
+  EXPECT_GT(alarm->value, 0.1);  // the bound, watchdog.overlap
   EXPECT_TRUE(has(alarm->cause, "contact.stiffness")) << alarm->cause;
 }
 
@@ -209,6 +211,133 @@ TEST(Watchdog, TheRunnerStopsWithTheDumpAndTheLastCheckpoint) {
     EXPECT_TRUE(has(text, "<VTKFile type=\"PolyData\"")) << text.substr(0, 200);
     EXPECT_TRUE(has(text, "Name=\"culprit\"")) << text.substr(0, 200);
   }
+}
+
+// The alarms' bounds: the density error at max(1 %, twice the expected of c0), so the fast
+// preset (c0 = 8 sqrt(2 g H): 0.78 % expected) alarms at its own 1.56 % and the balanced
+// one (0.5 %) at the weakly compressible 1 %; a number in the file as given; overlaps at 0.1 d.
+TEST(Watchdog, TheDensityAlarmIsTwiceTheExpectedErrorOrTheWeaklyCompressibleLimit) {
+  const Scene balanced = load_scene_text(kSettling, "t");
+  const double e_balanced = sound_speed_report(balanced).expected_density_error();
+  EXPECT_NEAR(e_balanced, 0.005, 1e-12);
+  EXPECT_DOUBLE_EQ(balanced.watchdog.density_error, 0.01);
+  const Scene fast = load_scene_text(kSettling, "t", {"fidelity=fast"});
+  const double e_fast = sound_speed_report(fast).expected_density_error();
+  EXPECT_NEAR(e_fast, 1.0 / (2 * 8.0 * 8.0), 1e-12);
+  EXPECT_DOUBLE_EQ(fast.watchdog.density_error, 2 * e_fast);
+  EXPECT_DOUBLE_EQ(
+      load_scene_text(kSettling, "t", {"watchdog.density_error=0.03"}).watchdog.density_error,
+      0.03);
+  EXPECT_DOUBLE_EQ(balanced.watchdog.overlap, 0.1);
+  // the resolved bound is what case.yaml records, and reads back as a number
+  EXPECT_DOUBLE_EQ(load_scene_text(scene_to_yaml(fast), "case.yaml").watchdog.density_error,
+                   2 * e_fast);
+}
+
+// The reading the warnings take: the worst density error and overlap of the state.
+TEST(Watchdog, TheReadingIsTheStatesWorstDensityErrorAndOverlap) {
+  const Scene sc = load_scene_text(kSettling, "t");
+  Simulation sim(sc);
+  sim.relax();
+  for (int k = 0; k < 20; ++k) sim.step();
+  WatchdogReading r;
+  EXPECT_FALSE(watchdog_check(sim, sc.watchdog, &r));
+  const FluidParticles& f = sim.fluid();
+  double worst = 0;
+  for (std::size_t a = 0; a < f.n_owned; ++a)
+    if (f.kind[a] == kFluid)
+      worst = std::max(worst, std::abs(f.rho[a] / (f.eps[a] * sim.eos().rho0) - 1.0));
+  EXPECT_GT(worst, 0.0);
+  EXPECT_EQ(r.density_error, worst);
+  const DemParticles& s = sim.spheres();
+  double overlap = 0;
+  for (std::size_t j = 0; j < s.n_owned; ++j)
+    overlap = std::max(overlap, s.overlap_max[j] / (2 * s.radius[j]));
+  EXPECT_EQ(r.overlap, overlap);
+}
+
+// The warnings: each kind once a run; a safeguard only once it has bitten in every one of
+// kPersistentSafeguardSteps steps in a row (a step without a hit starts the count again).
+TEST(Watchdog, WarningsComeOncePastTheExpectedValuesAndForAPersistentSafeguard) {
+  const Scene sc = load_scene_text(kSettling, "t");
+  WatchdogWarnings w(sc);
+  EXPECT_DOUBLE_EQ(w.density_warning(), 1.5 * 0.005);
+  EXPECT_LE(w.expected_overlap(), sc.contact.max_overlap);  // stiffness: auto
+  EXPECT_GT(w.expected_overlap(), 0.9 * sc.contact.max_overlap);
+  WatchdogStepTally quiet;
+  EXPECT_TRUE(w.observe(quiet, 1, 0.0).empty());
+  WatchdogStepTally dense = quiet;
+  dense.density_past_expected = true;
+  auto out = w.observe(dense, 2, 0.1);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(has(out[0], "density error passed 0.75 %")) << out[0];
+  EXPECT_TRUE(has(out[0], "the alarm is at 1 %")) << out[0];
+  EXPECT_TRUE(w.observe(dense, 3, 0.2).empty());
+  WatchdogStepTally pressed = quiet;
+  pressed.overlap_past_expected = true;
+  out = w.observe(pressed, 4, 0.3);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(has(out[0], "largest overlap passed")) << out[0];
+  WatchdogStepTally floor = quiet;
+  floor.floor_hits = 3;
+  for (long k = 1; k < kPersistentSafeguardSteps; ++k)
+    EXPECT_TRUE(w.observe(floor, 10 + k, 0.0).empty()) << k;
+  EXPECT_TRUE(w.observe(quiet, 200, 0.0).empty());  // one step without: the count starts again
+  for (long k = 1; k < kPersistentSafeguardSteps; ++k)
+    EXPECT_TRUE(w.observe(floor, 200 + k, 0.0).empty()) << k;
+  out = w.observe(floor, 300, 0.0);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(has(out[0], "voidage floor has held fluid particles in each of the last 100"))
+      << out[0];
+  EXPECT_TRUE(w.observe(floor, 301, 0.0).empty());
+  WatchdogStepTally clamp = quiet;
+  clamp.clamp_hits = 1;
+  for (long k = 1; k < kPersistentSafeguardSteps; ++k) EXPECT_TRUE(w.observe(clamp, k, 0).empty());
+  EXPECT_EQ(w.observe(clamp, 400, 0.0).size(), 1u);
+  // no fluid, no spring: nothing to expect
+  const WatchdogWarnings dry(load_scene_text(kDryBed, "t", {"particles.0.rigid=true"}));
+  EXPECT_TRUE(std::isinf(dry.expected_density_error()));
+  EXPECT_TRUE(std::isinf(dry.expected_overlap()));
+}
+
+// The coupling among the causes: a density alarm at a fluid particle among packed spheres
+// (a bed at eps 0.48 under 0.6 mm of water) names the interpolated coupling's instability
+// there, and with the variational coupling the Darcy pressure c0's rule does not count.
+TEST(Watchdog, AnAlarmAmongPackedSpheresNamesTheCoupling) {
+  const std::string bed =
+      "particles.0={type: lattice, species: glass, min: [0, 0, 0], max: [0.0016, 0.0016, "
+      "0.0010001], voidage: 0.4765}";
+  for (const char* coupling : {"interpolated", "variational"}) {
+    Scene sc = load_scene_text(kSettling, "t",
+                               {bed, std::string("coupling.pressure_coupling=") + coupling});
+    Simulation sim(sc);
+    sim.relax();
+    sim.step();
+    WatchdogSpec tight = sc.watchdog;
+    tight.density_error = 1e-9;  // the worst particle alarms
+    const auto alarm = watchdog_check(sim, tight);
+    ASSERT_TRUE(alarm);
+    ASSERT_TRUE(has(alarm->quantity, "density error")) << alarm->quantity;
+    ASSERT_LT(alarm->z, 0.001) << "the worst particle is in the bed";
+    if (std::string(coupling) == "interpolated") {
+      EXPECT_TRUE(has(alarm->cause, "interpolated pressure coupling is linearly unstable"))
+          << alarm->cause;
+    } else {
+      EXPECT_TRUE(has(alarm->cause, "Darcy")) << alarm->cause;
+      EXPECT_TRUE(has(alarm->cause, "fluid.sound_speed_factor")) << alarm->cause;
+    }
+  }
+  // above the bed, the same bound names no coupling
+  Scene clear = load_scene_text(kSettling, "t", {"particles=[]"});
+  Simulation sim(clear);
+  sim.relax();
+  sim.step();
+  WatchdogSpec tight = clear.watchdog;
+  tight.density_error = 1e-9;
+  const auto alarm = watchdog_check(sim, tight);
+  ASSERT_TRUE(alarm);
+  EXPECT_FALSE(has(alarm->cause, "coupling")) << alarm->cause;
+  EXPECT_FALSE(has(alarm->cause, "Darcy")) << alarm->cause;
 }
 
 }  // namespace

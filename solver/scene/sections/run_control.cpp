@@ -46,7 +46,7 @@ void read_run_control(MapReader& top, Scene& sc, ReadContext& cx) {
     MapReader r(top.child("watchdog"), "watchdog", cx.problems);
     WatchdogSpec& w = sc.watchdog;
     w.enabled = r.boolean("enabled");
-    w.density_error = r.number("density_error");
+    cx.density_alarm_auto = r.number_or_auto("density_error", w.density_error);
     w.overlap = r.number("overlap");
     w.safeguard_share = r.number("safeguard_share");
     r.finish();

@@ -26,6 +26,7 @@ struct ReadContext {
   bool resolution_given = false;           // fluid.resolution in the file (not a preset's)
   bool stiffness_auto = true;              // contact.stiffness: auto
   bool kernel_auto = true;                 // coupling.sphere_kernel_scale: auto
+  bool density_alarm_auto = true;          // watchdog.density_error: auto
   bool drag_kernel_given = false;          // coupling.drag_kernel_scale in the file
 };
 
