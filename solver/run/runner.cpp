@@ -550,6 +550,25 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets, i
         c.impact_overlap * scale, c.impact_speed, c.static_overlap * c.k / sc.contact.normal.k,
         sc.contact.max_overlap);
   }
+  if (sc.watchdog.enabled) {  // (analysis/watchdog_warnings.hpp)
+    const WatchdogWarnings w(sc);
+    const bool fluid = std::isfinite(w.expected_density_error());
+    const bool springs = std::isfinite(w.expected_overlap());
+    s += fmt::format(
+        "watchdog         stops the run past {}an overlap of {} d; warns once past {}{}, and "
+        "for a safeguard biting {} steps in a row\n",
+        fluid ? fmt::format("a density error of {:.2g} % (watchdog.density_error), ",
+                            100 * sc.watchdog.density_error)
+              : "",
+        sc.watchdog.overlap,
+        fluid ? fmt::format("{:.2g} % ({} x the expected)", 100 * w.density_warning(),
+                            kDensityWarningMargin)
+              : "",
+        springs ? fmt::format("{}the expected overlap {:.2g} d", fluid ? ", " : "",
+                              w.expected_overlap())
+                : "",
+        kPersistentSafeguardSteps);
+  }
   const TangentialParams& tp = sc.contact.tangential;
   if (tp.model == TangentialParams::Model::kLinearHistory)
     s += fmt::format("friction         linear_history: k_t = {:.4g} N/m, mu = {}, {}\n",
