@@ -122,6 +122,20 @@ std::string fluid_cause(const Simulation& sim, long at = -1) {
                      sim.scene().fluid.sound_speed, sim.dt_sph());
 }
 
+// A density error past its bound with every state finite: unless a named cause applies,
+// the flow's pressure is larger than c0's rule expects (a suspension's voidage fluctuating
+// with no free surface to relieve it: in a periodic column it grows to a plateau several
+// times the rule's figure, falling as 1/c0 to 1/c0^2, bench/TRADEOFF.md), not an unstable
+// step (which leaves the bound by far within a few steps and then the state non-finite).
+std::string density_cause(const Simulation& sim, long at) {
+  if (auto named = named_fluid_cause(sim, at)) return *named;
+  return fmt::format(
+      "the flow's pressure is larger than c0 = {:.3g} m/s leads to expect (the spheres' voidage "
+      "fluctuating, no free surface to relieve it): raise fluid.sound_speed_factor (the error "
+      "falls as 1/c0 to 1/c0^2)",
+      sim.scene().fluid.sound_speed);
+}
+
 // Why a particle went where it should not (through the wall, out of the box): the
 // contacts' integration, else the fluid's, else a box with no room for the motion.
 std::string instability_cause(const Simulation& sim, const std::string& otherwise) {
@@ -218,7 +232,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
                         contact_cause(sim));
   if (worst_density > limits.density_error)
     return fluid_alarm(sim, worst_density_at, "density error |rho/(eps rho0) - 1|", worst_density,
-                       limits.density_error, fluid_cause(sim, worst_density_at));
+                       limits.density_error, density_cause(sim, worst_density_at));
   const double fluid_count = static_cast<double>(std::max<std::size_t>(sim.fluid_count(), 1));
   const double floor_share = sim.voidage_clamped() / fluid_count;
   const double clamp_share = sim.omega_bounded() / fluid_count;

@@ -338,6 +338,9 @@ TEST(Watchdog, AnAlarmAmongPackedSpheresNamesTheCoupling) {
   ASSERT_TRUE(alarm);
   EXPECT_FALSE(has(alarm->cause, "coupling")) << alarm->cause;
   EXPECT_FALSE(has(alarm->cause, "Darcy")) << alarm->cause;
+  // a density bound passed with the state finite is c0's, not an unstable step's
+  EXPECT_TRUE(has(alarm->cause, "raise fluid.sound_speed_factor")) << alarm->cause;
+  EXPECT_FALSE(has(alarm->cause, "lower time.cfl")) << alarm->cause;
 }
 
 }  // namespace
