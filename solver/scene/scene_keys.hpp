@@ -270,10 +270,10 @@ inline constexpr SceneKey kSceneKeys[] = {
     key_rows::boolean("watchdog.enabled", true,
         "stop a run going wrong naming the particle, the quantity and the likely cause"),
     key_rows::number_or_auto("watchdog.density_error", "–", above(0),
-        "bound on |ρ/(ε ρ0) − 1| of any fluid particle; `auto`: max(1 %, twice the expected density error of c0, `scene/sound_speed_rule.hpp`); a warning when it passes the expected one")
+        "bound on |ρ/(ε ρ0) − 1| of any fluid particle; `auto`: twice the expected density error of c0 (`scene/sound_speed_rule.hpp`), within [1 %, 2 %]; a warning once past 1.5 times the expected one")
         .note("`auto`"),
     key_rows::number("watchdog.overlap", "–", 0.1, above(0),
-        "bound on any sphere's largest overlap / d (the soft-sphere limit `check` refuses past); a warning when it passes the spring's expected overlap"),
+        "bound on any sphere's largest overlap / d (the soft-sphere limit `check` refuses past); a warning once past the spring's expected overlap"),
     key_rows::number("watchdog.safeguard_share", "–", 0.01, closed(0, 1),
         "bound on the share of the fluid held at `coupling.voidage_floor` or with Ω clamped, in one step"),
 
