@@ -41,10 +41,9 @@ std::vector<std::string> WatchdogWarnings::observe(const WatchdogStepTally& t, l
     density_warned_ = true;
     out.push_back(fmt::format(
         "{}: the largest density error passed {:.2g} %, {} times the {:.2g} % that c0 leads to "
-        "expect (the alarm is at {:.2g} %): the flow presses the fluid harder than the sound speed "
-        "rule "
-        "counts (a dense bed's Darcy pressure, a fast flow); log.csv max_density_error "
-        "follows it; raise fluid.sound_speed_factor if it keeps growing",
+        "expect (the alarm is at {:.2g} %): the flow presses the fluid harder than the sound "
+        "speed rule counts (a dense bed's Darcy pressure, a fast flow); log.csv "
+        "max_density_error follows it; raise fluid.sound_speed_factor if it keeps growing",
         when, 100 * density_warning(), kDensityWarningMargin, 100 * expected_density_,
         100 * density_alarm_));
   }
