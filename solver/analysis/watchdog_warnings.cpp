@@ -19,9 +19,7 @@ double spring_expected_overlap(const Scene& sc) {
   const bool all_rigid = std::all_of(sc.particles.begin(), sc.particles.end(),
                                      [](const ParticleGroupSpec& g) { return g.rigid; });
   if (sc.species.empty() || !(sc.contact.normal.k > 0.0) || all_rigid) return HUGE_VAL;
-  const StiffnessChoice c = choose_contact_stiffness(sc);
-  return std::max(c.impact_overlap * std::sqrt(c.k / sc.contact.normal.k),
-                  c.static_overlap * c.k / sc.contact.normal.k);
+  return expected_overlaps(sc).worst();
 }
 
 }  // namespace

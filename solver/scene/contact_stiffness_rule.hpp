@@ -16,6 +16,7 @@
 // Each species counts with its largest sphere (the largest m v^2 and p d). The DEM step
 // then follows from t_c (scene/time_step.hpp). A softer spring means fewer DEM sub-steps:
 // the reason this is the default.
+#include <cmath>
 #include <string>
 
 #include "scene/scene.hpp"
@@ -33,5 +34,17 @@ struct StiffnessChoice {
 // The choice for a resolved scene (fluid, drag law, species and groups set); the scene's
 // own contact.normal.k is not read.
 StiffnessChoice choose_contact_stiffness(const Scene& sc);
+
+// The expected overlaps / d of a scene's own spring k (contact.normal.k > 0): the choice's,
+// scaled as k^-1/2 at impact and k^-1 under the sediment's weight.
+struct ExpectedOverlaps {
+  double impact = 0.0, at_rest = 0.0;
+  double worst() const { return impact > at_rest ? impact : at_rest; }
+};
+inline ExpectedOverlaps expected_overlaps(const Scene& sc) {
+  const StiffnessChoice c = choose_contact_stiffness(sc);
+  const double k = sc.contact.normal.k;
+  return {c.impact_overlap * std::sqrt(c.k / k), c.static_overlap * c.k / k};
+}
 
 }  // namespace sphdem

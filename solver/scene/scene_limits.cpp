@@ -146,10 +146,8 @@ std::vector<LimitBreach> scene_limit_breaches(const Scene& sc) {
   const bool all_rigid = std::all_of(sc.particles.begin(), sc.particles.end(),
                                      [](const ParticleGroupSpec& g) { return g.rigid; });
   if (!sc.species.empty() && sc.contact.normal.k > 0.0 && !all_rigid) {
-    const StiffnessChoice c = choose_contact_stiffness(sc);
-    const double impact = c.impact_overlap * std::sqrt(c.k / sc.contact.normal.k);
-    const double at_rest = c.static_overlap * c.k / sc.contact.normal.k;
-    const double worst = std::max(impact, at_rest);
+    const ExpectedOverlaps o = expected_overlaps(sc);
+    const double impact = o.impact, at_rest = o.at_rest, worst = o.worst();
     if (worst > kOverlapLimit) {
       // overlaps scale as k^-1/2 at impact and k^-1 at rest
       const double k_needed =
