@@ -105,6 +105,7 @@ vtkSmartPointer<vtkPolyData> sphere_view(const DemParticles& s,
   vtkPointData* p = pd->GetPointData();
   p->AddArray(vector_copy("velocity", s.vx.data(), s.vy.data(), s.vz.data(), n));
   p->AddArray(vector_copy("fluid_force", s.fx.data(), s.fy.data(), s.fz.data(), n));
+  p->AddArray(scalar_view("voidage", s.eps.data(), n));
   c.diameter.resize(n);
   c.density.resize(n);
   c.species.resize(n);
