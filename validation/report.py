@@ -7,9 +7,13 @@
 Each scene of the registry (SCENES, vreport/scenes/__init__.py) names its runs (a
 case file and the --set overrides of each mode), runs them with `BUILD/app/sphdem run`,
 reads log.csv, case.yaml and, when the in-situ analysis ran, insitu/interfaces.csv, and
-compares with the references of theory.py. The rows go to OUT/VALIDATION.md (with the
-command, date, machine, commit and wall times) and the figures to OUT/figures/.
-Exit code 0 when every row with a target meets it, 1 otherwise (also when a run fails).
+compares with the references of theory.py. Each row is a comparison (its reference
+independent of the solver's drag closure, or computed from it), a health check or a
+self-check of theory.py, and the count keeps them apart. The rows go to OUT/VALIDATION.md
+(with the command, date, machine, commit and wall times) and the figures to OUT/figures/.
+Exit code 0 when every row with a target meets it or misses it for a reason that rows of
+the same report measure (MISS; --strict fails on those too), 1 otherwise (also when a run
+fails or a regime of the matrix fails).
 """
 # This file is the command: its options, the loop over the scenes and VALIDATION.md. The
 # rest is the package vreport/ beside it: runs.py (running sphdem, the reuse rule, --run-dir),
@@ -28,8 +32,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from vreport.figures import Context  # noqa: E402
 from vreport.matrix import MATRIX, extremes_markdown, matrix_markdown  # noqa: E402
-from vreport.rows import (Row, exit_status, fmt_err, fmt_target, mark_safeguard_hits,  # noqa: E402
-                          safeguard_rows, summary_line)
+from vreport.rows import (KINDS, REFERENCE_KINDS, Row, exit_status, fmt_err, fmt_target,  # noqa: E402
+                          mark_safeguard_hits, safeguard_rows, settle_misses, summary_line)
 from vreport.runs import REPO, adopt, execute, sh, solver_identity, source_dir  # noqa: E402
 from vreport.scenes import SCENES  # noqa: E402
 
@@ -74,20 +78,21 @@ def write_markdown(path, rows, args, total_wall, figures, started, matrix=()):
            f"- solver: {solver_provenance(args.build)}",
            f"- total wall time: {total_wall:.0f} s ({total_wall / 60:.1f} min) of the runs"
            + (f", under `nice -n {args.nice}`" if args.nice else "") + (" (runs reused: their recorded wall times)" if args.reuse else ""),
-           f"- result: **{sum(r.status == 'PASS' for r in rows)} pass, {sum(r.status == 'FAIL' for r in rows)} fail, "
-           f"{sum(r.status == 'MISS' for r in rows)} target missed for a measured reason (MISS)**, "
-           f"{sum(r.status == 'INFO' for r in rows)} informative, {sum(r.status == 'SKIP' for r in rows)} skipped", "",
+           f"- result: **{summary_line(rows, matrix)}**", "",
            ] + (matrix_markdown(matrix) if matrix else []) + (
                extremes_markdown(os.path.abspath(args.build), args.nice) if matrix else []) + ["## Every row", "",
            "Error = simulated / reference − 1 unless the quantity says otherwise; a row passes when |error| ≤ target. "
-           "Wall time is that of the run the row reads (rows of one run share it).", "",
-           "| scene | quantity | reference | source | simulated | error | target | status | resolution | wall (s) |",
-           "|---|---|---|---|---|---|---|---|---|---|"]
+           "MISS: a target missed for a reason that other rows of this report measure (the note names them); "
+           "without them the row is a FAIL. Wall time is that of the run the row reads (rows of one run share it).",
+           "", "Kind: " + "; ".join(f"**{label}** {meaning}" for label, meaning in KINDS.values()) + ". A comparison's "
+           "reference: " + "; ".join(f"**·{label}** {meaning}" for label, meaning in REFERENCE_KINDS.values()) + ".",
+           "", "| scene | kind | quantity | reference | source | simulated | error | target | status | resolution | "
+           "wall (s) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         sim = r.simulated + (f" — {r.note}" if r.note else "") + (f" — {r.skip}" if r.skip else "")
         wall = "–" if r.wall is None else f"{r.wall:.0f}"
-        cells = [r.scene, r.quantity, r.reference, r.source, sim, fmt_err(r), fmt_target(r), r.status,
-                 r.resolution, wall]
+        cells = [r.scene, r.kind_label(), r.quantity, r.reference, r.source, sim, fmt_err(r), fmt_target(r),
+                 r.status, r.resolution, wall]
         out.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
     out += ["", "## Figures", ""]
     for f in figures:
@@ -170,9 +175,10 @@ def main():
         try:
             rows += scene.evaluate(results, ctx)
         except Exception as e:  # a broken evaluation is a failed row, not a crash of the report
-            rows.append(Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0))
+            rows.append(Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0, kind="health"))
         rows += safeguard_rows(scene.name, results)
     mark_safeguard_hits(rows)
+    settle_misses(rows)
     total = time.perf_counter() - t_start
     if args.reuse:  # the runs' own wall times as recorded, not this re-evaluation's
         total = run_wall
@@ -187,9 +193,9 @@ def main():
     write_markdown(path, rows, args, total, ctx.figures, started, matrix)
     width = max(len(r.quantity) for r in rows)
     for r in rows:
-        print(f"{r.status:4s}  {r.scene:24s} {r.quantity:{width}s}  ref {r.reference:30s} sim {r.simulated:28s} "
-              f"err {fmt_err(r):>9s} target {fmt_target(r)}")
-    print(f"[report] {path}: {summary_line(rows)}; total wall {total:.0f} s")
+        print(f"{r.status:4s}  {r.kind_label():7s} {r.scene:24s} {r.quantity:{width}s}  ref {r.reference:30s} "
+              f"sim {r.simulated:28s} err {fmt_err(r):>9s} target {fmt_target(r)}")
+    print(f"[report] {path}: {summary_line(rows, matrix)}; total wall {total:.0f} s")
     matrix_failed = any(status == "FAIL" for _, _, status in matrix)
     return 1 if matrix_failed else exit_status(rows, args.strict)
 

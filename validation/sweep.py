@@ -41,7 +41,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vreport.figures import Context  # noqa: E402
-from vreport.rows import Row, mark_safeguard_hits, safeguard_rows  # noqa: E402
+from vreport.rows import Row, mark_safeguard_hits, safeguard_rows, settle_misses  # noqa: E402
 from vreport.runs import Run, execute  # noqa: E402
 from vreport.scenes import SCENES  # noqa: E402
 
@@ -116,9 +116,10 @@ def run_point(index, values, scene, args, sphdem, env):
     try:
         rows = scene.evaluate(results, ctx)
     except Exception as e:  # noqa: BLE001  a broken evaluation is a failed row
-        rows = [Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0)]
+        rows = [Row(scene.name, "evaluation", "–", "–", f"error: {e!r}", None, 0.0, kind="health")]
     rows += safeguard_rows(scene.name, results)
     mark_safeguard_hits(rows)
+    settle_misses(rows)
     return label, results, rows
 
 

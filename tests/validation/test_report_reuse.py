@@ -1,7 +1,8 @@
 """validation/report.py (its package vreport/: runs.py, rows.py): a run is reused only when
 the solver, the scene file and the in-situ scripts are the ones it was made with; the
 safeguard line a run prints at its end is read and marks the rows of that run; --strict
-turns a missed target into a failing exit.
+turns a missed target into a failing exit; a missed target is a MISS only with its evidence
+among the report's rows; the summary counts the rows' kinds apart.
 
 A stand-in `sphdem` (a script that writes a log.csv, prints the safeguard line and counts
 its calls) takes the solver's place, so this runs in a second."""
@@ -16,7 +17,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "validation"))
 from vreport import runs  # noqa: E402
-from vreport.rows import Row, exit_status, mark_safeguard_hits, safeguard_rows, summary_line  # noqa: E402
+from vreport.rows import (Row, exit_status, mark_safeguard_hits, safeguard_rows, settle_misses,  # noqa: E402
+                          summary_line)
 
 FAKE = """#!/bin/sh
 # stand-in sphdem: run CASE --out DIR ...
@@ -101,7 +103,8 @@ class Reuse(unittest.TestCase):
         r = self.execute()
         self.assertEqual(r.safeguards["floor_steps"], 3)
         self.assertEqual(r.safeguards["steps"], 10)
-        rows = [Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r)] + safeguard_rows("scene", {"k": r})
+        rows = [Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r, kind="comparison", reference_kind="independent")]
+        rows += safeguard_rows("scene", {"k": r})
         mark_safeguard_hits(rows)
         self.assertIn("voidage floor in 3", rows[0].note)
         floor_row = [x for x in rows if "Ω clamp" in x.quantity][0]
@@ -110,7 +113,7 @@ class Reuse(unittest.TestCase):
 
     def test_quiet_run_leaves_rows_alone(self):
         r = self.execute()
-        rows = [Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r)]
+        rows = [Row("scene", "slip", "1", "src", "1", 0.0, 0.01, r, kind="comparison", reference_kind="independent")]
         mark_safeguard_hits(rows)
         self.assertEqual(rows[0].note, "")
 
@@ -150,7 +153,7 @@ class Strict(unittest.TestCase):
     def rows(self, *statuses):
         out = []
         for s in statuses:
-            r = Row("scene", "q", "1", "src", "1", 0.0, 0.01)
+            r = Row("scene", "q", "1", "src", "1", 0.0, 0.01, kind="comparison", reference_kind="own-closure")
             r.status = s
             out.append(r)
         return out
@@ -160,7 +163,51 @@ class Strict(unittest.TestCase):
         self.assertEqual(exit_status(rows, strict=False), 0)
         self.assertEqual(exit_status(rows, strict=True), 1)
         self.assertEqual(exit_status(self.rows("PASS", "FAIL"), strict=False), 1)
-        self.assertEqual(summary_line(rows), "3 rows: 1 pass, 0 fail, 1 miss, 1 informative, 0 skipped")
+        self.assertEqual(summary_line(rows), "3 rows: comparisons with an independent reference 0 (0 pass, 0 fail, "
+                                             "0 miss, 0 informative), with the solver's own closure 3 (1 pass, 0 fail, "
+                                             "1 miss, 1 informative); health checks 0 (0 pass, 0 fail, 0 miss, 0 "
+                                             "informative); theory.py's self-checks 0 (0 pass, 0 fail, 0 miss, 0 "
+                                             "informative); 0 skipped")
+
+
+class Miss(unittest.TestCase):
+    """A target missed for a known reason is a MISS only when rows of the same report measure
+    it; the kinds are declared and counted apart."""
+
+    def row(self, error, target, **kw):
+        return Row("scene", "q", "1", "src", "1", error, target, kind="comparison", reference_kind="own-closure", **kw)
+
+    def test_miss_needs_evidence_in_the_same_report(self):
+        shown = self.row(0.01, None)
+        miss = self.row(0.08, 0.04, known="the faces", evidence=[shown])
+        elsewhere = self.row(0.08, 0.04, known="the faces", evidence=[self.row(0.01, None)])
+        none = self.row(0.08, 0.04, known="the faces", evidence=[])
+        rows = [miss, shown, elsewhere, none]
+        settle_misses(rows)
+        self.assertEqual([r.status for r in rows], ["MISS", "INFO", "FAIL", "FAIL"])
+        self.assertIn("target missed: the faces; shown by", miss.note)
+        self.assertIn("no row of this report shows it", none.note)
+
+    def test_known_without_evidence_and_undeclared_kinds_refused(self):
+        with self.assertRaises(ValueError):
+            self.row(0.08, 0.04, known="a sentence")
+        with self.assertRaises(ValueError):
+            Row("scene", "q", "1", "src", "1", 0.0, 0.01, kind="comparison")
+        with self.assertRaises(ValueError):
+            Row("scene", "q", "1", "src", "1", 0.0, 0.01, kind="health", reference_kind="independent")
+
+    def test_summary_counts_kinds_apart(self):
+        rows = [self.row(0.0, 0.01), Row("s", "q", "1", "src", "1", 0.0, 0.0, kind="health", count=True),
+                Row("s", "q", "1", "src", "1", 0.0, 1e-9, kind="self-check"),
+                Row("s", "q", "1", "src", "1", 0.0, 0.01, kind="comparison", reference_kind="independent",
+                    skip="not run")]
+        self.assertEqual([r.kind_label() for r in rows], ["cmp·own", "health", "self", "cmp·ind"])
+        line = summary_line(rows, matrix=[(None, [], "PART"), (None, [], "PASS")])
+        self.assertIn("with the solver's own closure 1 (1 pass", line)
+        self.assertIn("health checks 1 (1 pass", line)
+        self.assertIn("theory.py's self-checks 1 (1 pass", line)
+        self.assertIn("independent reference 0 (", line)
+        self.assertTrue(line.endswith("1 skipped; regime matrix: 1 of 2 PART"))
 
 
 if __name__ == "__main__":

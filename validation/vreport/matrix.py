@@ -9,12 +9,13 @@ from .rows import fmt_err
 from .scenes.suspension_monodisperse import SuspensionMonodisperse
 
 
-# Five regimes are measured (in part) by validation gtests, not by sphdem runs (a shear
+# Seven regimes are measured (in part) by validation gtests, not by sphdem runs (a shear
 # wave's initial field, a bed without gravity, the sand column's base loads, a sphere or a
-# grain in columns the reduced mode does not run): each records its
+# grain in columns the reduced mode does not run, the periodic columns): each records its
 # numbers with RecordProperty, ctest writes them to BUILD/GTEST_XML/<test>.xml
 # (tests/validation/CMakeLists.txt) before this report runs, and the report runs a test
-# itself when its file is missing or older than the test's executable.
+# itself when its file is missing or older than the test's executable. A regime read from
+# a test is PART at best.
 GTEST_XML = os.path.join("tests", "validation", "gtest-xml")
 
 
@@ -46,9 +47,11 @@ def gtest_results(build, test, nice=0, folder="validation"):
 class Regime:
     """One row of the matrix: the report rows it reads ((scene, quantity prefix), with the
     row's own verdict, or (scene, prefix, target) judged here on |error|; a tuple of
-    prefixes reads the first one the report measured; a part not measured, or measured by
-    a later prefix, leaves the regime PART at best) and the gtests (test, 'Suite.Name', [(property, label), ...]); `elsewhere`
-    names what the mode does not run (the longer runs and the commands that make them)."""
+    prefixes reads the first one the report measured) and the gtests (test, 'Suite.Name',
+    [(property, label), ...]); `elsewhere` names what the mode does not run (the longer runs
+    and the commands that make them). A regime is PART at best when a part is not measured,
+    is measured by a stand-in (a later prefix), or is read from a gtest rather than from the
+    regime's own run."""
 
     def __init__(self, regime, scene, criterion, rows=(), gtests=(), elsewhere=""):
         self.regime, self.scene, self.criterion = regime, scene, criterion
@@ -96,8 +99,8 @@ class Regime:
             status = "MISS"
         elif "SKIP" in statuses and "PASS" not in statuses:
             status = "SKIP"
-        elif "SKIP" in statuses:
-            status = "PART"   # every part measured passes; a part was left out of this report
+        elif "SKIP" in statuses or self.gtests:
+            status = "PART"   # every part measured passes; a part was left out, stood in for or read from a test
         else:
             status = "PASS"
         return measured, status
@@ -171,7 +174,9 @@ MATRIX = [
 def matrix_markdown(entries):
     out = ["## Regime matrix (issue 14): every regime with the same defaults", "",
            "No scene of the matrix sets a coupling key; the values are this report's rows and the validation tests' records. "
-           "PART: every part measured passes and a part was left out of this report (the last column says which).", "",
+           "PASS: every part is read from the regime's own run in this report and passes. PART: every part measured "
+           "passes, but a part was left out of this report (the last column says which), stood in for by another run, "
+           "or read from a validation test (ctest) rather than from the regime's own run.", "",
            "| regime | scene | criterion | measured | status | not in this run |", "|---|---|---|---|---|---|"]
     for reg, measured, status in entries:
         cells = [reg.regime, reg.scene, reg.criterion, "; ".join(measured) or "–", status, reg.elsewhere or "–"]

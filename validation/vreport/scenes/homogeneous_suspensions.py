@@ -77,8 +77,10 @@ class HomogeneousSuspensions:
                 rows.append(Row(self.name, what, f"{lo * 1e3:.4g}–{hi * 1e3:.4g} mm/s",
                                 f"Richardson & Zaki (n {n_rz:.3g}) to Garside & Al-Dibouni (n {n_gad:.3g}), "
                                 f"u_t {u_t * 1e3:.4g} mm/s (Dallavalle), ±5 %", shown + " mm/s",
-                                drag_laws.band_offset(mean, lo, hi), 0.0, r0))
+                                drag_laws.band_offset(mean, lo, hi), 0.0, r0, kind="comparison",
+                                reference_kind="independent"))
                 rows.append(Row(self.name, what + " against the law's balance", f"{own * 1e3:.4g} mm/s",
                                 f"{law}: C(ε, Re) 3πμ d u_s = ε (ρp − ρf) g V (the solver's own closure)",
-                                shown + " mm/s", mean / own - 1.0, None, r0))
+                                shown + " mm/s", mean / own - 1.0, None, r0, kind="comparison",
+                                reference_kind="own-closure"))
         return rows

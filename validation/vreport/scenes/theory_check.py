@@ -17,10 +17,10 @@ class TheoryCheck:
         ref = 4.924e-3
         return [Row(self.name, "Di Felice slip (4.4), ε = 0.9, d = 100 µm, ρp = 2500 (theory.py)",
                     "4.924 mm/s", "thesis §4.5 (closed_forms.hpp tolerance 0.03 mm/s)", f"{v * 1e3:.4f} mm/s",
-                    v / ref - 1, 0.03e-3 / ref, None,
+                    v / ref - 1, 0.03e-3 / ref, None, kind="self-check",
                     note="theory.py and closed_forms.hpp both give 4.9124 mm/s with μ = 8.9e-4, g = 9.81"),
                 Row(self.name, "Masliyah–Kynch two-species model (theory.TwoSpeciesKynch) with two equal densities "
                                "(2450/2450, ε0 = 0.9): largest relative deviation of both species' speeds, both "
                                "fronts and φ_B from the monodisperse (4.4), and of one species alone at ε = 0.8, "
                                "0.9, 0.95", "0", "theory.mixture_self_check", f"{theory.mixture_self_check():.1e}",
-                    theory.mixture_self_check(), 1e-9, None)]
+                    theory.mixture_self_check(), 1e-9, None, kind="self-check")]
