@@ -18,6 +18,13 @@
 
 #include "coupling/drag_laws.hpp"
 
+namespace sphdem {
+// A sphere at this voidage or above is a lone sphere: a law without a voidage function
+// (Stokes, Coulson-Richardson) is the right one there (scene/scene_limits.hpp), and its drag
+// reads the whole kernel (coupling.drag_upstream, coupling/interpolation.cpp).
+inline constexpr double kLoneSphereVoidage = 0.99;
+}  // namespace sphdem
+
 namespace sphdem::drag {
 
 struct DragLawInfo {

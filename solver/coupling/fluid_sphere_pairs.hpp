@@ -10,6 +10,7 @@
 // The drag's kernel (coupling.drag_kernel_scale, at most sphere_kernel_scale) may be
 // narrower: then each entry also carries W(r_aj, H^drag_a), and the fields the drag
 // reads (voidage, fluid velocity at the spheres) and the reaction use it.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct FluidSpherePairs {
   // The drag's weights kept apart even at the spheres' kernel width (a bed on the
   // distributor rewrites them: coupling/distributor_mirror.hpp); set before build_list.
   bool keep_drag_weights = false;
+  // The side of a sphere the drag's fields are read from (coupling.drag_upstream: gravity's
+  // unit vector; zero: the whole kernel; coupling/interpolation.hpp).
+  std::array<double, 3> upstream{};
 
   bool drag_apart() const { return drag_scale != scale || keep_drag_weights; }
   // The kernel values the drag's fields and the reaction use.

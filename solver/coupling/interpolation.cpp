@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include "coupling/drag_law_table.hpp"
 #include "domain/row_partition.hpp"
 #include "sph/pair_isa.hpp"
 
@@ -10,10 +11,14 @@ namespace sphdem {
 namespace {
 
 // A sphere's row of sums: eight weighted by the drag's kernel W_jb (the first block, one
-// vector add per pair), then three that carry the fluid's force: m_b theta_b W_jb
+// vector add per pair), the same eight over the kernel's upstream half only (the second
+// block, with pairs.upstream), then three that carry the fluid's force: m_b theta_b W_jb
 // (interpolated), or the variational pairs' V_a P_a grad_a W_aj; one pad.
-enum { kS, kEps, kUx, kUy, kUz, kDs, kDw, kPad, kGx, kGy, kGz, kRow = 12 };
+enum { kS, kEps, kUx, kUy, kUz, kDs, kDw, kPad, kUpstream, kGx = 16, kGy, kGz, kRow = 20 };
 constexpr int kWeighted = 8;
+// The least share of the Shepard sum S_j the upstream half must hold to be read alone: about
+// half in the bulk; less within a kernel of the floor, where the whole kernel is read.
+constexpr double kUpstreamShareMin = 0.25;
 // The first block as one vector (one AVX-512 register, or four SSE2 ones; GCC/Clang).
 using Block = double __attribute__((vector_size(kWeighted * sizeof(double))));
 inline void add_block(double* r, double w, const Block& q) {  // r[0..8) += w q
@@ -57,6 +62,8 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
   const double* __restrict wd = pairs.drag_w().data();
   const double* __restrict grad = pairs.grad.data();
   double walls_on_spheres_z = 0.0;
+  const double ux = pairs.upstream[0], uy = pairs.upstream[1], uz = pairs.upstream[2];
+  const bool upstream = ux != 0.0 || uy != 0.0 || uz != 0.0;
   // rows differ in length: contiguous shares of equal entries (domain/row_partition.hpp),
   // whose spheres' rows stay in the thread's cache
   const auto [lo, hi] = thread_rows(pairs.list.offset, nf, kFluidRowCost);
@@ -75,6 +82,8 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
       double* __restrict r = acc.row(t, j);  // a halo image's row goes to its owner later
       const double w = wd[k];
       add_block(r, w, q);
+      if (upstream && (xb - s.x[j]) * ux + (yb - s.y[j]) * uy + (zb - s.z[j]) * uz >= 0.0)
+        add_block(r + kUpstream, w, q);
       if constexpr (kPressure) {  // per unit sphere volume
         const double dx = xb - s.x[j], dy = yb - s.y[j], dz = zb - s.z[j];
         const double gf = grad[k], c = s.volume(j) * gf, pg = vp * gf;
@@ -141,11 +150,16 @@ double interpolate_fluid_at_spheres(DemParticles& s, FluidParticles& f,
     const double S = sum(kS);
     s.shepard[j] = S;
     if (S > 0.0) {
-      const double inv = 1.0 / S;
-      s.eps[j] = sum(kEps) * inv;
-      s.ufx[j] = sum(kUx) * inv;
-      s.ufy[j] = sum(kUy) * inv;
-      s.ufz[j] = sum(kUz) * inv;
+      // the drag's voidage and fluid velocity from the upstream half where it holds enough
+      // and the sphere is not alone (where the clear liquid is all there is to read)
+      const double S_up = sum(kUpstream + kS);
+      const bool among_spheres = sum(kEps) < kLoneSphereVoidage * S;
+      const int from = S_up >= kUpstreamShareMin * S && among_spheres ? kUpstream : 0;
+      const double inv = 1.0 / (from ? S_up : S);
+      s.eps[j] = sum(from + kEps) * inv;
+      s.ufx[j] = sum(from + kUx) * inv;
+      s.ufy[j] = sum(from + kUy) * inv;
+      s.ufz[j] = sum(from + kUz) * inv;
       const double dw = sum(kDw);
       s.d_sauter[j] = dw > 0.0 ? sum(kDs) / dw : 2.0 * s.radius[j];
     } else {

@@ -19,6 +19,13 @@ namespace sphdem {
 //   (-grad P + div tau)_j = sum_b m_b theta_b W_jb(h_b) / S_j          (2.69)
 //   u_f,j = sum_b (m_b/rho_b) u_b W_jb / S_j,  eps_j likewise          (for 2.74)
 //   and the local Sauter mean diameter (2.80) for the polydisperse drag
+// With pairs.upstream (coupling.drag_upstream: gravity's direction), u_f,j and eps_j are the
+// same sums over the fluid on that side of the sphere only, normalised by their own S_j:
+// the half the fluid passing a settling or fluidised sphere comes from, so the clear liquid
+// above a suspension does not raise the voidage its top spheres read. Only where that half
+// holds at least a quarter of S_j (not at the floor) and the whole kernel's eps_j is under
+// kLoneSphereVoidage (a lone sphere reads the whole kernel). S_j itself, and so the
+// reaction (2.71), keeps the whole kernel.
 // Scattered from the owned fluid particles' pairs: a pair with a halo sphere adds to the
 // image's row, which the halo adds to its owner's (Halo::add_to_sources): the
 // same sum over periodic images. A sphere with no fluid neighbour (above the free

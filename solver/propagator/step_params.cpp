@@ -38,6 +38,7 @@ StepParams compile_step_params(const Scene& scene) {
   c.variational = variational;
   c.sphere_kernel_scale = scene.sphere_kernel_scale;
   c.drag_kernel_scale = scene.drag_kernel_scale;
+  c.drag_upstream = scene.drag_upstream;
   c.voidage_floor = scene.voidage_floor;
   if (scene.periodic_z() && scene.flow.distributor)
     c.distributor = DistributorPlane{scene.box.lo[2], scene.box.length(2)};

@@ -206,6 +206,7 @@ struct Scene {
   bool hydrostatic_split = false;
   double sphere_kernel_scale = 1;  // H / h, see PressureCoupling (resolved)
   double drag_kernel_scale = 1;    // H_drag / h, see PressureCoupling (resolved)
+  bool drag_upstream = false;      // coupling.drag_upstream (interpolation.hpp)
   // The loader's record of coupling.sphere_kernel_scale: auto (scene/kernel_width_rule.hpp):
   // what it chose and why (empty when the file gave a number).
   std::string sphere_kernel_reason;

@@ -214,6 +214,9 @@ inline constexpr SceneKey kSceneKeys[] = {
     key_rows::number("coupling.drag_kernel_scale", "–", 1, closed(1, 3),
         "H_drag/h: the kernel the drag's fields are gathered with (ε, u_f and the Shepard sum at a sphere) and the reaction spreads with")
         .note("a given `sphere_kernel_scale`; 1 under `auto`").limits("≤ `sphere_kernel_scale`"),
+    key_rows::boolean("coupling.drag_upstream", true,
+        "the drag's fields at a sphere (ε and u_f of 2.74) gathered from the fluid on the side gravity points to, the half of its kernel the fluid passing a settling or fluidised sphere comes from, where that half holds at least a quarter of the Shepard sum and the sphere is not alone (voidage under 0.99; else the whole kernel, as at the floor and for a lone sphere): the clear liquid above a suspension then does not speed its top spheres into a skin that overturns (validation/README.md, session 37); the Shepard sum and the reaction keep the whole kernel")
+        .note("`true` under gravity"),
 
     // ---- time, startup, output
     // ---- flow (domain.periodic_z)

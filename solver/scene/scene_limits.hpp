@@ -32,9 +32,6 @@ namespace sphdem {
 // The share of its drag kernel (of width h) a sphere of diameter d fills, V W(0), and
 // the largest a scene may have.
 inline constexpr double kSelfVoidageLimit = 0.025;
-// A group at this voidage or above is a few lone spheres: a law without a voidage function
-// (Stokes, Coulson-Richardson) is the right one there.
-inline constexpr double kLoneSphereVoidage = 0.99;
 double sphere_kernel_share(double d, double h);
 
 struct LimitBreach {

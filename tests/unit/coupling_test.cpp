@@ -263,6 +263,53 @@ TEST(Coupling, ShepardInterpolationIsExactForConstants) {
   }
 }
 
+// coupling.drag_upstream: over a suspension's top (voidage 0.75 and the return flow below
+// z = 1.3 mm, clear liquid at rest above), spheres under it read exactly the suspension's
+// voidage and flow from the kernel's half on gravity's side, where the whole kernel reads
+// the clear liquid too; the Shepard sum (and so the reaction) keeps the whole kernel; a
+// sphere whose gravity side holds only the wall (V = 0) reads the whole kernel, and so do
+// lone spheres.
+TEST(Coupling, DragUpstreamReadsTheHalfGravityPointsTo) {
+  Config c;
+  build(c, 12, 11);
+  DemParticles& s = c.s;
+  const double z_top = 1.3e-3;
+  for (std::size_t j = 0; j < s.n_owned; ++j) s.z[j] = j == 0 ? 0.2e-3 : 0.95e-3 + 0.03e-3 * j;
+  rebuild_sphere_side(c);
+  FluidParticles& f = c.f;
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    const bool below = f.z[a] < z_top;
+    f.eps_drag[a] = below ? 0.75 : 1.0;
+    f.vx[a] = f.vy[a] = 0.0;
+    f.vz[a] = below ? 1e-3 : 0.0;
+  }
+  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
+  const std::vector<double> eps_whole = s.eps, shepard_whole = s.shepard;
+  c.pairs.upstream = {0.0, 0.0, -1.0};
+  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
+  double read_clear = 0.0;
+  for (std::size_t j = 1; j < s.n_owned; ++j) {
+    EXPECT_NEAR(s.eps[j], 0.75, 1e-14) << "sphere " << j << " at z = " << s.z[j];
+    EXPECT_NEAR(s.ufz[j], 1e-3, 1e-17);
+    EXPECT_DOUBLE_EQ(s.shepard[j], shepard_whole[j]);
+    read_clear = std::max(read_clear, eps_whole[j] - 0.75);
+  }
+  EXPECT_GT(read_clear, 0.01) << "the whole kernel should reach the clear liquid";
+  EXPECT_DOUBLE_EQ(s.eps[0], eps_whole[0]) << "the sphere on the floor reads the whole kernel";
+  // lone spheres (voidage >= kLoneSphereVoidage) read the whole kernel: the flow they drag
+  // along is not read from ahead of them
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    f.eps_drag[a] = 0.995;
+    f.vz[a] = f.z[a];
+  }
+  c.pairs.upstream = {};
+  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
+  const std::vector<double> ufz_whole = s.ufz;
+  c.pairs.upstream = {0.0, 0.0, -1.0};
+  interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
+  for (std::size_t j = 1; j < s.n_owned; ++j) EXPECT_DOUBLE_EQ(s.ufz[j], ufz_whole[j]);
+}
+
 // With the drag's kernel apart (sphere_kernel_scale 1.5, drag_kernel_scale 1), the fluid
 // keeps the wide voidage and everything the drag reads is what the narrow kernel alone
 // gives: eps_drag and the Sauter mean at the fluid particles, and the Shepard sum, the

@@ -7,6 +7,7 @@ import subprocess
 
 from .rows import fmt_err
 from .scenes.suspension_monodisperse import SuspensionMonodisperse
+from .scenes.untuned_fronts import UntunedFronts
 
 
 # Seven regimes are measured (in part) by validation gtests, not by sphdem runs (a shear
@@ -134,6 +135,12 @@ MATRIX = [
                      "the full report with --long; without it the interface over the case's first 60 ms (full) or "
                      "35 ms of a 2 × 2 mm column (reduced) stands in. The sediment at rest also in a 2 × 2 mm column "
                      "with 2.4 mm of suspension at k = 10 to 0.6 s (full report)"),
+    Regime("suspension front, untuned scene, every preset",
+           "validation/scenes/untuned_front.yaml (no case ships it: 250 µm glass in water-glycerol, defaults)",
+           "upper interface within 8 % of Kynch (4.4) over the whole fall (0.2 s to 1.6 s or 1 mm above the "
+           "sediment), ε0 = 0.7, 0.8, 0.9, 0.95 at h/d = 2, at each of fast, balanced and accurate",
+           rows=[("untuned_fronts", UntunedFronts.PREFIX)],
+           elsewhere="full mode only (12 runs of 3–10 min each); the reduced report leaves it out"),
     Regime("a packed bed under clear water", "packed-bed stability",
            "fluid kinetic energy stays at round-off over 0.1 s",
            gtests=[("packed_bed_stability_validation", "PackedBedAtRest.CandidateDefaultsStayAtRest",

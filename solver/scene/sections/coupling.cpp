@@ -78,6 +78,12 @@ void read_coupling(MapReader& top, Scene& sc, ReadContext& cx) {
   cx.kernel_auto = r.number_or_auto("sphere_kernel_scale", sc.sphere_kernel_scale);
   cx.drag_kernel_given = r.has("drag_kernel_scale");
   sc.drag_kernel_scale = r.number("drag_kernel_scale");
+  // default: on under gravity (the side it points to is the upstream half of the kernel)
+  const bool gravity = sc.gravity[0] != 0.0 || sc.gravity[1] != 0.0 || sc.gravity[2] != 0.0;
+  sc.drag_upstream = r.boolean("drag_upstream", gravity && sc.fluid.enabled);
+  if (sc.drag_upstream && !gravity)
+    r.fail(r.key("drag_upstream"),
+           "true needs gravity (the side it points to is the upstream half)");
   r.finish();
 }
 
@@ -91,7 +97,8 @@ void write_coupling(YAML::Emitter& e, const Scene& sc) {
     << (sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated")
     << YAML::Key << "hydrostatic_split" << YAML::Value << sc.hydrostatic_split << YAML::Key
     << "sphere_kernel_scale" << YAML::Value << sc.sphere_kernel_scale << YAML::Key
-    << "drag_kernel_scale" << YAML::Value << sc.drag_kernel_scale;
+    << "drag_kernel_scale" << YAML::Value << sc.drag_kernel_scale << YAML::Key << "drag_upstream"
+    << YAML::Value << sc.drag_upstream;
   if (sc.double_smoothing.enabled)
     e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species
       << YAML::Key << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;

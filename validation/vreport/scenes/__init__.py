@@ -9,6 +9,7 @@ from .single_particle import SingleParticle
 from .suspension_monodisperse import SuspensionMonodisperse
 from .suspension_two_species import SuspensionOfTwoSpecies
 from .theory_check import TheoryCheck
+from .untuned_fronts import UntunedFronts
 
 
 # One entry per scene. To add a scene: a class with `name`, `runs(mode)` and
@@ -18,6 +19,7 @@ SCENES = [
     SingleParticle(),
     BlockMonodisperse(),
     SuspensionMonodisperse(),
+    UntunedFronts(),   # issue 38: a scene no case ships, every preset (full mode only)
     BlockBidisperse(),
     # 0.06 s left the light front 0.71 layers of travel (2.1 mm/s over 42 ms): 0.1 s gives ~1.8
     SuspensionOfTwoSpecies("suspension_two_densities", "cases/suspension_two_densities.yaml", 0.002, False, 0.1),
