@@ -10,17 +10,21 @@ namespace sphdem {
 
 namespace {
 
-// A sphere's row of sums: eight weighted by the drag's kernel W_jb (the first block, one
-// vector add per pair), the same eight over the kernel's upstream half only (the second
-// block, with pairs.upstream), then three that carry the fluid's force: m_b theta_b W_jb
-// (interpolated), or the variational pairs' V_a P_a grad_a W_aj; one pad.
-enum { kS, kEps, kUx, kUy, kUz, kDs, kDw, kPad, kUpstream, kGx = 16, kGy, kGz, kRow = 20 };
+// A sphere's row of sums, two blocks of eight: eight weighted by the drag's kernel W_jb
+// (the first block, one vector add per pair); then the first five of them over the kernel's
+// upstream half only (with pairs.upstream; one vector add per pair, its last three lanes
+// zero) and three that carry the fluid's force: m_b theta_b W_jb (interpolated), or the
+// variational pairs' V_a P_a grad_a W_aj.
+enum { kS, kEps, kUx, kUy, kUz, kDs, kDw, kPad, kUpstream, kGx = kUpstream + 5, kGy, kGz, kRow };
 constexpr int kWeighted = 8;
 // The least share of the Shepard sum S_j the upstream half must hold to be read alone: about
 // half in the bulk; less within a kernel of the floor, where the whole kernel is read.
 constexpr double kUpstreamShareMin = 0.25;
 // The first block as one vector (one AVX-512 register, or four SSE2 ones; GCC/Clang).
 using Block = double __attribute__((vector_size(kWeighted * sizeof(double))));
+// The lanes of the first block the upstream block repeats: kS, kEps, kUx, kUy, kUz.
+constexpr Block kUpstreamLanes = {1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
+static_assert(kS == 0 && kEps == 1 && kUx == 2 && kUy == 3 && kUz == 4 && kRow == 2 * kWeighted);
 inline void add_block(double* r, double w, const Block& q) {  // r[0..8) += w q
   Block v;
   __builtin_memcpy(&v, r, sizeof v);
@@ -72,31 +76,31 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
     if (!kPressure && !mobile) continue;
     Block q;
     __builtin_memcpy(&q, staged + kWeighted * b, sizeof q);
+    const Block q_upstream = q * kUpstreamLanes;
     const double xb = f.x[b], yb = f.y[b], zb = f.z[b], mb = f.mass[b];
     const double p_dyn = kPressure ? f.P[b] - ph(zb) : 0.0;
     const double vp = mb / f.rho[b] * p_dyn;  // V_b P_b
-    const double mtx = mb * f.thx[b], mty = mb * f.thy[b], mtz = mb * f.thz[b];
+    const Block theta = {0.0, 0.0, 0.0, 0.0, 0.0, mb * f.thx[b], mb * f.thy[b], mb * f.thz[b]};
     double gx = 0.0, gy = 0.0, gz = 0.0;  // sum_j V_j grad_b W_bj = -grad eps_b
     for (std::uint32_t k = pairs.begin(b); k < pairs.end(b); ++k) {
       const std::uint32_t j = sphere[k];
       double* __restrict r = acc.row(t, j);  // a halo image's row goes to its owner later
       const double w = wd[k];
       add_block(r, w, q);
-      if (upstream && (xb - s.x[j]) * ux + (yb - s.y[j]) * uy + (zb - s.z[j]) * uz >= 0.0)
-        add_block(r + kUpstream, w, q);
+      // the second block in one vector add: the upstream sums (a pair on the other side adds
+      // zeros: branch-free, as the sides of a sphere's pairs come in no order) and the force
+      const double side = (xb - s.x[j]) * ux + (yb - s.y[j]) * uy + (zb - s.z[j]) * uz;
+      const double w_upstream = upstream && side >= 0.0 ? w : 0.0;
       if constexpr (kPressure) {  // per unit sphere volume
         const double dx = xb - s.x[j], dy = yb - s.y[j], dz = zb - s.z[j];
         const double gf = grad[k], c = s.volume(j) * gf, pg = vp * gf;
         gx += c * dx;
         gy += c * dy;
         gz += c * dz;
-        r[kGx] += pg * dx;
-        r[kGy] += pg * dy;
-        r[kGz] += pg * dz;
+        const Block force = {0.0, 0.0, 0.0, 0.0, 0.0, dx, dy, dz};
+        add_block(r + kUpstream, 1.0, w_upstream * q_upstream + pg * force);
       } else {
-        r[kGx] += w * mtx;
-        r[kGy] += w * mty;
-        r[kGz] += w * mtz;
+        add_block(r + kUpstream, 1.0, w_upstream * q_upstream + w * theta);
       }
     }
     if constexpr (kPressure) {
