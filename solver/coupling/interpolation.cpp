@@ -89,10 +89,9 @@ inline double scatter_rows(FluidParticles& f, const DemParticles& s, const Fluid
       add_block(r, w, q);
       // the second block in one vector add: the upstream sums (a pair on the other side adds
       // zeros: branch-free, as the sides of a sphere's pairs come in no order) and the force
-      const double side = (xb - s.x[j]) * ux + (yb - s.y[j]) * uy + (zb - s.z[j]) * uz;
-      const double w_upstream = upstream && side >= 0.0 ? w : 0.0;
+      const double dx = xb - s.x[j], dy = yb - s.y[j], dz = zb - s.z[j];
+      const double w_upstream = upstream && dx * ux + dy * uy + dz * uz >= 0.0 ? w : 0.0;
       if constexpr (kPressure) {  // per unit sphere volume
-        const double dx = xb - s.x[j], dy = yb - s.y[j], dz = zb - s.z[j];
         const double gf = grad[k], c = s.volume(j) * gf, pg = vp * gf;
         gx += c * dx;
         gy += c * dy;

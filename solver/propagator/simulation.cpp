@@ -325,11 +325,7 @@ void Simulation::build_sphere_pairs() {
     list_reach_[a] =
         params_.coupling.sphere_kernel_scale * kernel::kSupport * fluid_.h[a] + sphere_pair_skin_;
   sphere_pairs_.keep_drag_weights = params_.coupling.distributor.on();
-  const std::array<double, 3>& g = params_.gravity;
-  const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-  sphere_pairs_.upstream = {};
-  if (params_.coupling.drag_upstream && g_norm > 0.0)
-    sphere_pairs_.upstream = {g[0] / g_norm, g[1] / g_norm, g[2] / g_norm};
+  sphere_pairs_.upstream = params_.coupling.drag_upstream;
   sphere_pairs_.build_list(fluid_, sphere_cells_, params_.coupling.sphere_kernel_scale,
                            list_reach_.data(), params_.coupling.drag_kernel_scale);
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -38,7 +39,10 @@ StepParams compile_step_params(const Scene& scene) {
   c.variational = variational;
   c.sphere_kernel_scale = scene.sphere_kernel_scale;
   c.drag_kernel_scale = scene.drag_kernel_scale;
-  c.drag_upstream = scene.drag_upstream;
+  const std::array<double, 3>& g = scene.gravity;
+  const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  if (scene.drag_upstream && g_norm > 0.0)
+    c.drag_upstream = {g[0] / g_norm, g[1] / g_norm, g[2] / g_norm};
   c.voidage_floor = scene.voidage_floor;
   if (scene.periodic_z() && scene.flow.distributor)
     c.distributor = DistributorPlane{scene.box.lo[2], scene.box.length(2)};

@@ -36,7 +36,9 @@ struct CouplingParams {
   bool variational = false;        // coupling.pressure_coupling
   double sphere_kernel_scale = 1;  // H / h of the spheres' kernel
   double drag_kernel_scale = 1;    // H_drag / h of the drag's kernel (<= the spheres')
-  bool drag_upstream = false;      // the drag's fields from the kernel's gravity side
+  // coupling.drag_upstream: gravity's unit vector, the side of a sphere its drag's fields are
+  // read from (FluidSpherePairs::upstream); zero: the whole kernel
+  std::array<double, 3> drag_upstream{};
   double voidage_floor = 0.3;
   bool double_smoothing = false;  // (3.8-3.10)
   double big_h_over_d = 1.5;
