@@ -136,8 +136,9 @@ std::string density_cause(const Simulation& sim, long at) {
       sim.scene().fluid.sound_speed);
 }
 
-// Why a particle went where it should not (through the wall, out of the box): the
-// contacts' integration, else the fluid's, else a box with no room for the motion.
+// Why a particle went wrong (non-finite, through the wall, out of the box): the contacts'
+// integration, else the fluid's (a step past the tested CFL takes the spheres with it),
+// else `otherwise` (a spring too soft, a box with no room for the motion).
 std::string instability_cause(const Simulation& sim, const std::string& otherwise) {
   const double per_contact = sim.contact_time() / std::max(sim.dt_dem(), 1e-300);
   if (sim.spheres().n_owned > 0 && per_contact < kFewSubSteps) return contact_cause(sim);
@@ -203,7 +204,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
   const double inf = HUGE_VAL;
   if (bad_sphere < ns)
     return sphere_alarm(sim, bad_sphere, "non-finite position or velocity", NAN, inf,
-                        contact_cause(sim));
+                        instability_cause(sim, contact_cause(sim)));
   if (bad_fluid < nf)
     return fluid_alarm(sim, bad_fluid, "non-finite position, velocity or density", NAN, inf,
                        fluid_cause(sim));
@@ -212,7 +213,7 @@ std::optional<WatchdogAlarm> watchdog_check(const Simulation& sim, const Watchdo
     return sphere_alarm(
         sim, out_sphere, below ? "left the domain through the bottom wall" : "left the domain",
         s.z[out_sphere], below ? box.lo[2] : top_z,
-        below ? contact_cause(sim)
+        below ? instability_cause(sim, contact_cause(sim))
               : instability_cause(sim,
                                   "thrown past the top of the box: give it room above the "
                                   "column (domain.size), or find what threw it"));

@@ -30,8 +30,12 @@ StepParams compile_step_params(const Scene& scene) {
   f.relax_steps = scene.startup.relax_steps;
   f.relax_damping = scene.startup.damping;
   // no hydrostatic correction where no hydrostatic pressure is (periodic in z)
-  f.diffusion = DensityDiffusion{fs.density_diffusion, fs.sound_speed, f.eos,
-                                 scene.periodic_z() ? 0.0 : scene.gravity[2], f.fill_height};
+  f.diffusion = DensityDiffusion{fs.density_diffusion,
+                                 fs.sound_speed,
+                                 f.eos,
+                                 scene.periodic_z() ? 0.0 : scene.gravity[2],
+                                 f.fill_height,
+                                 fs.diffusion_renormalised};
   if (scene.hydrostatic_split)
     f.split = HydrostaticPressure{f.eos.rho0, scene.gravity[2], f.fill_height};
 

@@ -29,6 +29,7 @@ inline constexpr const char* kTangentialModel[] = {"none", "linear_history", nul
 inline constexpr const char* kRollingModel[] = {"none", "epsd", nullptr};
 inline constexpr const char* kVoidageSmoothing[] = {"single", "double", nullptr};
 inline constexpr const char* kPressureCoupling[] = {"interpolated", "variational", nullptr};
+inline constexpr const char* kDensityDiffusionForm[] = {"renormalised", "hydrostatic", nullptr};
 }  // namespace key_choices
 
 // clang-format off
@@ -78,7 +79,9 @@ inline constexpr SceneKey kSceneKeys[] = {
     key_rows::number("fluid.alpha_artificial", "–", 0, closed(0, 2),
         "Monaghan's α (2.56) on approaching pairs; it adds a viscosity of its own (bench/TRADEOFF.md)"),
     key_rows::number("fluid.density_diffusion", "–", 0.1, closed(0, 1),
-        "δ of the density diffusion (δ-SPH with Fourtakas's hydrostatic correction, `sph/density_diffusion.hpp`): damps the acoustic noise without a shear viscosity; 0 = off"),
+        "δ of the density diffusion (δ-SPH, `sph/density_diffusion.hpp`): damps the acoustic noise without a shear viscosity; 0 = off"),
+    key_rows::choice("fluid.density_diffusion_form", key_choices::kDensityDiffusionForm, "renormalised",
+        "what the diffusion leaves alone: `renormalised` (Antuono et al. 2010) subtracts each pair's difference along the renormalised density gradient, so a density varying linearly, as under a suspension's weight, gets none; `hydrostatic` (Fourtakas et al. 2019, DualSPHysics's DDT) only the pure fluid's hydrostatic profile, and where a suspension's weight bends that profile (its top, the floor) it makes and removes fluid volume, a spurious flow through the suspension (validation/README.md, session 38)"),
     key_rows::integer("fluid.gamma", "–", 7, closed(1, 7), "Tait exponent γ (2.58)"),
     key_rows::integer("fluid.wall_layers", "layers", 3, closed(2, 8),
         "layers of fixed wall particles below z = 0 (§1, walls)")

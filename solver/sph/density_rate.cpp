@@ -26,6 +26,14 @@ inline DensityTerms density_terms(double r, double udotr, double inv_ha, double 
           ma * fb * udotr, -0.5 * (fa + fb)};
 }
 
+// The diffusion's psi_b - psi_a less its part along the pair's mean renormalised gradient,
+// (G_a + G_b)/2 . (r_b - r_a) (density_diffusion.hpp; G = 0 in the `hydrostatic` form),
+// given G_a + G_b and r_a - r_b.
+inline double psi_difference(double psi_a, double psi_b, double gx_sum, double gy_sum,
+                             double gz_sum, double dx, double dy, double dz) {
+  return psi_b - psi_a + 0.5 * (gx_sum * dx + gy_sum * dy + gz_sum * dz);
+}
+
 inline double self_dwdh(const FluidParticles& f, long a) {  // the self term of (2.54)
   return f.mass[a] * kernel::dw_dh_q(0.0, f.inv_h[a]);
 }
@@ -43,6 +51,9 @@ void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, P
     double sum_dwdh = self_dwdh(f, a), sum_div = 0.0, sum_diff = 0.0;
     const double psi_a = kDiffusion ? f.diffusion_psi[a] : 0.0;
     const double vol_a = kDiffusion ? f.diffusion_volume[a] : 0.0;
+    const double gxa = kDiffusion ? f.diffusion_gx[a] : 0.0,
+                 gya = kDiffusion ? f.diffusion_gy[a] : 0.0,
+                 gza = kDiffusion ? f.diffusion_gz[a] : 0.0;
     for (std::uint32_t k = half.begin(a); k < half.end(a); ++k) {
       const std::uint32_t b = half.neighbour[k];
       const double dx = xa - f.x[b], dy = ya - f.y[b], dz = za - f.z[b];
@@ -53,7 +64,12 @@ void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, P
       const DensityTerms d = density_terms(std::sqrt(r2), udotr, inv_ha, f.inv_h[b], ma, f.mass[b]);
       sum_dwdh += d.dwdh_a;
       sum_div += d.div_a;
-      const double dpsi_f = kDiffusion ? (f.diffusion_psi[b] - psi_a) * d.minus_f : 0.0;
+      const double dpsi_f =
+          kDiffusion
+              ? psi_difference(psi_a, f.diffusion_psi[b], gxa + f.diffusion_gx[b],
+                               gya + f.diffusion_gy[b], gza + f.diffusion_gz[b], dx, dy, dz) *
+                    d.minus_f
+              : 0.0;
       if constexpr (kDiffusion) sum_diff += dpsi_f * f.diffusion_volume[b];
       if (b < n) {  // the mirror pair, for the owned b
         double* rb = acc.row(t, b);
@@ -86,12 +102,17 @@ inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& hal
   const double* __restrict mass = f.mass.data();
   const double* __restrict psi = f.diffusion_psi.data();
   const double* __restrict vol = f.diffusion_volume.data();
+  const double* __restrict gx = f.diffusion_gx.data();
+  const double* __restrict gy = f.diffusion_gy.data();
+  const double* __restrict gz = f.diffusion_gz.data();
   const std::size_t mirrors = kDiffusion ? 3 : 2;
   for (long a = lo; a < hi; ++a) {
     const double inv_ha = inv_h[a], ma = mass[a];
     const double xa = x[a], ya = y[a], za = z[a];
     const double vxa = vx[a], vya = vy[a], vza = vz[a];
     const double psi_a = kDiffusion ? psi[a] : 0.0, vol_a = kDiffusion ? vol[a] : 0.0;
+    const double gxa = kDiffusion ? gx[a] : 0.0, gya = kDiffusion ? gy[a] : 0.0,
+                 gza = kDiffusion ? gz[a] : 0.0;
     const std::uint32_t* __restrict nb = half.neighbour.data() + half.begin(a);
     const std::uint32_t len = half.end(a) - half.begin(a);
     double sum_dwdh = self_dwdh(f, a), sum_div = 0.0, sum_diff = 0.0;
@@ -112,7 +133,9 @@ inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& hal
       mirror_dwdh[k] = d.dwdh_b;
       mirror_div[k] = d.div_b;
       if constexpr (kDiffusion) {
-        const double dpsi_f = (psi[b] - psi_a) * d.minus_f;
+        const double dpsi_f =
+            psi_difference(psi_a, psi[b], gxa + gx[b], gya + gy[b], gza + gz[b], dx, dy, dz) *
+            d.minus_f;
         sum_diff += dpsi_f * live * vol[b];
         mirror_diff[k] = -dpsi_f * vol_a;
       }

@@ -20,7 +20,8 @@ namespace sphdem {
 // With a hydrostatic pressure ph, the pair term carries P - ph(z) instead of P (the
 // hydrostatic split of the variational coupling; ph's own force is added analytically).
 // With dd.on(), drho_a/dt also gets the density diffusion D_a of sph/density_diffusion.hpp
-// (diffusion_psi and diffusion_volume must be current on owned and halo particles).
+// (diffusion_psi, diffusion_volume and the gradient diffusion_g* must be current on owned
+// and halo particles).
 std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half,
                                  PairAccumulator& scratch, bool voidage_weighted_pressure = false,
                                  const HydrostaticPressure& ph = {},

@@ -33,13 +33,14 @@ struct FluidParticles {
   std::vector<double>
       drag_rate;  // K_a, the reaction's relaxation rate (coupling/drag_exchange.hpp)
   std::vector<double> diffusion_psi, diffusion_volume;  // sph/density_diffusion.hpp (if on)
+  std::vector<double> diffusion_gx, diffusion_gy, diffusion_gz;  // grad psi, renormalised
 
   std::size_t n_owned = 0;
   std::size_t size() const { return x.size(); }
 
   // The field registry: every per-particle array with its name and role
   // (domain/field_info.hpp), for checkpoints, halos, resizing and reordering.
-  static constexpr int kFieldCount = 30;
+  static constexpr int kFieldCount = 33;
   template <class F>
   void for_each_field(F&& f) {
     visit_fields(*this, f);
@@ -86,6 +87,9 @@ struct FluidParticles {
     f(FieldInfo{"drag_rate", kScratch}, p.drag_rate);
     f(FieldInfo{"diffusion_psi", kHaloAfterPass}, p.diffusion_psi);
     f(FieldInfo{"diffusion_volume", kHaloAfterPass}, p.diffusion_volume);
+    f(FieldInfo{"diffusion_gx", kHaloAfterPass}, p.diffusion_gx);
+    f(FieldInfo{"diffusion_gy", kHaloAfterPass}, p.diffusion_gy);
+    f(FieldInfo{"diffusion_gz", kHaloAfterPass}, p.diffusion_gz);
   }
 };
 

@@ -57,6 +57,10 @@ Column make_column() {
     f.eps[i] = 0.7 + 0.3 * std::abs(u(rng));
     f.diffusion_psi[i] = f.kind[i] == kFluid ? 2.0 * u(rng) : 0.0;
     f.diffusion_volume[i] = f.kind[i] == kFluid ? f.mass[i] / f.rho[i] : 0.0;
+    // a renormalised gradient of psi (the `renormalised` form's correction; any values do)
+    f.diffusion_gx[i] = f.kind[i] == kFluid ? 0.7 * u(rng) : 0.0;
+    f.diffusion_gy[i] = f.kind[i] == kFluid ? 0.7 * u(rng) : 0.0;
+    f.diffusion_gz[i] = f.kind[i] == kFluid ? 0.7 * u(rng) : 0.0;
   }
   const double hmax = *std::max_element(f.h.begin(), f.h.end());
   const double rc = kernel::kSupport * hmax + kSkin;
@@ -83,7 +87,12 @@ double brute_force_diffusion(const FluidParticles& f, const DensityDiffusion& dd
     const double r2 = dx * dx + dy * dy + dz * dz;
     const double minus_f =
         -0.5 * (kernel::grad_factor(r2, f.h[a]) + kernel::grad_factor(r2, f.h[b]));
-    const double term = (f.diffusion_psi[b] - f.diffusion_psi[a]) * minus_f * f.diffusion_volume[b];
+    // psi_b - psi_a less (G_a + G_b)/2 . (r_b - r_a)
+    const double dpsi = f.diffusion_psi[b] - f.diffusion_psi[a] +
+                        0.5 * ((f.diffusion_gx[a] + f.diffusion_gx[b]) * dx +
+                               (f.diffusion_gy[a] + f.diffusion_gy[b]) * dy +
+                               (f.diffusion_gz[a] + f.diffusion_gz[b]) * dz);
+    const double term = dpsi * minus_f * f.diffusion_volume[b];
     sum += term;
     scale += std::abs(term);
   }

@@ -110,7 +110,7 @@ TEST(Watchdog, NonFiniteStateWithTheOtherBoundsOff) {
   EXPECT_TRUE(has(alarm->quantity, "non-finite") || has(alarm->quantity, "wall") ||
               has(alarm->quantity, "domain"))
       << alarm->quantity;
-  EXPECT_TRUE(has(alarm->cause, "time.cfl")) << alarm->cause;
+  EXPECT_TRUE(has(alarm->cause, "time.cfl")) << alarm->quantity << ": " << alarm->cause;
 }
 
 TEST(Watchdog, ASurfaceParticleMayBobAKernelSupportAboveTheTop) {
