@@ -12,6 +12,19 @@
 
 namespace sphdem {
 
+namespace {
+
+// fluid.density_diffusion_form: auto takes the renormalised form where spheres settle under
+// gravity onto a floor, whose weight bends the fluid's density profile (sph/density_diffusion.hpp),
+// and spares its pass elsewhere (no spheres, no gravity, a column periodic in z).
+bool renormalised_density_diffusion(const Scene& scene) {
+  const std::string& form = scene.fluid.density_diffusion_form;
+  if (form != "auto") return form == "renormalised";
+  return scene.gravity[2] != 0.0 && !scene.periodic_z() && !scene.particles.empty();
+}
+
+}  // namespace
+
 StepParams compile_step_params(const Scene& scene) {
   StepParams p;
   p.box = scene.box;
@@ -35,7 +48,7 @@ StepParams compile_step_params(const Scene& scene) {
                                  f.eos,
                                  scene.periodic_z() ? 0.0 : scene.gravity[2],
                                  f.fill_height,
-                                 fs.diffusion_renormalised};
+                                 renormalised_density_diffusion(scene)};
   if (scene.hydrostatic_split)
     f.split = HydrostaticPressure{f.eos.rho0, scene.gravity[2], f.fill_height};
 

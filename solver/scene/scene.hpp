@@ -33,7 +33,7 @@ struct FluidSpec {
   double resolution = 1;  // layers per `spacing`: dx = spacing / resolution (resolved to 1)
   double alpha_artificial = scene_default("fluid.alpha_artificial");    // Monaghan's alpha
   double density_diffusion = scene_default("fluid.density_diffusion");  // delta
-  bool diffusion_renormalised = true;  // fluid.density_diffusion_form: renormalised
+  std::string density_diffusion_form = "auto";  // auto | renormalised | hydrostatic
   int gamma = static_cast<int>(scene_default("fluid.gamma"));
   int wall_layers = static_cast<int>(scene_default("fluid.wall_layers"));
   bool enabled = scene_default("fluid.enabled") != 0;  // false: dry DEM, no SPH particles

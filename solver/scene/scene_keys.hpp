@@ -29,7 +29,8 @@ inline constexpr const char* kTangentialModel[] = {"none", "linear_history", nul
 inline constexpr const char* kRollingModel[] = {"none", "epsd", nullptr};
 inline constexpr const char* kVoidageSmoothing[] = {"single", "double", nullptr};
 inline constexpr const char* kPressureCoupling[] = {"interpolated", "variational", nullptr};
-inline constexpr const char* kDensityDiffusionForm[] = {"renormalised", "hydrostatic", nullptr};
+inline constexpr const char* kDensityDiffusionForm[] = {"auto", "renormalised", "hydrostatic",
+                                                        nullptr};
 }  // namespace key_choices
 
 // clang-format off
@@ -80,8 +81,8 @@ inline constexpr SceneKey kSceneKeys[] = {
         "Monaghan's α (2.56) on approaching pairs; it adds a viscosity of its own (bench/TRADEOFF.md)"),
     key_rows::number("fluid.density_diffusion", "–", 0.1, closed(0, 1),
         "δ of the density diffusion (δ-SPH, `sph/density_diffusion.hpp`): damps the acoustic noise without a shear viscosity; 0 = off"),
-    key_rows::choice("fluid.density_diffusion_form", key_choices::kDensityDiffusionForm, "renormalised",
-        "what the diffusion leaves alone: `renormalised` (Antuono et al. 2010) subtracts each pair's difference along the renormalised density gradient, so a density varying linearly, as under a suspension's weight, gets none; `hydrostatic` (Fourtakas et al. 2019, DualSPHysics's DDT) only the pure fluid's hydrostatic profile, and where a suspension's weight bends that profile (its top, the floor) it makes and removes fluid volume, a spurious flow through the suspension (validation/README.md, session 38)"),
+    key_rows::choice("fluid.density_diffusion_form", key_choices::kDensityDiffusionForm, "auto",
+        "what the diffusion leaves alone: `renormalised` (Antuono et al. 2010) subtracts each pair's difference along the renormalised density gradient, so a density varying linearly, as under a suspension's weight, gets none (one more fluid pass); `hydrostatic` (Fourtakas et al. 2019, DualSPHysics's DDT) only the pure fluid's hydrostatic profile, and where a suspension's weight bends that profile (its top, the floor) it makes and removes fluid volume, a spurious flow through the suspension (validation/README.md, session 38); `auto`: `renormalised` where spheres settle under gravity onto a floor (not periodic in z), else `hydrostatic`"),
     key_rows::integer("fluid.gamma", "–", 7, closed(1, 7), "Tait exponent γ (2.58)"),
     key_rows::integer("fluid.wall_layers", "layers", 3, closed(2, 8),
         "layers of fixed wall particles below z = 0 (§1, walls)")

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "analysis/diagnostics.hpp"
 #include "domain/cell_list.hpp"
@@ -296,4 +297,38 @@ TEST(DensityDiffusion, WaterColumnAtRestStaysAtRest) {
               100 * d.max_density_error);
   EXPECT_LT(vmax, 1e-3);
   EXPECT_LT(d.max_density_error, 0.01);
+}
+
+namespace {
+const char* kSuspension = R"(
+name: suspension
+domain: {size: [0.0016, 0.0016, 0.0032]}
+fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4}
+species: [{name: glass, diameter: 1.0e-4, density: 2500}]
+particles:
+  - {type: random, species: glass, voidage: 0.9, min: [0, 0, 0], max: [0.0016, 0.0016, 0.0016], seed: 3}
+)";
+const char* kPeriodicSuspension = R"(
+name: periodic
+domain: {size: [0.0016, 0.0016, 0.0016], periodic_z: true}
+fluid: {density: 1000, viscosity: 8.9e-4, spacing: 2.0e-4}
+species: [{name: glass, diameter: 1.0e-4, density: 2500}]
+particles:
+  - {type: random, species: glass, voidage: 0.9, min: [0, 0, 0], max: [0.0016, 0.0016, 0.0016], seed: 3}
+flow: {times: [0], superficial_velocity: [0]}
+)";
+bool renormalised(const char* text, std::vector<std::string> sets = {}) {
+  return compile_step_params(load_scene_text(text, "t.yaml", sets)).fluid.diffusion.renormalised;
+}
+}  // namespace
+
+// fluid.density_diffusion_form: auto is renormalised where spheres settle under gravity onto
+// a floor, hydrostatic without spheres, without gravity or periodic in z; a given form wins.
+TEST(DensityDiffusion, AutoFormIsRenormalisedWhereSpheresSettleOntoAFloor) {
+  EXPECT_TRUE(renormalised(kSuspension));
+  EXPECT_FALSE(renormalised(kColumn));
+  EXPECT_FALSE(renormalised(kSuspension, {"gravity=[0, 0, 0]"}));
+  EXPECT_FALSE(renormalised(kPeriodicSuspension));
+  EXPECT_FALSE(renormalised(kSuspension, {"fluid.density_diffusion_form=hydrostatic"}));
+  EXPECT_TRUE(renormalised(kColumn, {"fluid.density_diffusion_form=renormalised"}));
 }

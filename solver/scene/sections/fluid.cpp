@@ -27,8 +27,7 @@ void read_fluid(MapReader& top, Scene& sc, ReadContext& cx) {
   f.resolution = r.number("resolution", cx.preset->resolution);
   f.alpha_artificial = r.number("alpha_artificial");
   f.density_diffusion = r.number("density_diffusion");
-  f.diffusion_renormalised =
-      r.choice("density_diffusion_form").value_or("renormalised") == "renormalised";
+  f.density_diffusion_form = r.choice("density_diffusion_form").value_or("auto");
   f.gamma = r.integer("gamma");
   const int min_layers = static_cast<int>(std::ceil(2.0 * f.smoothing_factor - 1e-9));
   f.wall_layers = r.integer("wall_layers", std::max(3, min_layers), min_layers);
@@ -77,8 +76,7 @@ void write_fluid(YAML::Emitter& e, const Scene& sc) {
     << "sound_speed_factor" << YAML::Value << f.sound_speed_factor << YAML::Key << "resolution"
     << YAML::Value << f.resolution << YAML::Key << "alpha_artificial" << YAML::Value
     << f.alpha_artificial << YAML::Key << "density_diffusion" << YAML::Value << f.density_diffusion;
-  e << YAML::Key << "density_diffusion_form" << YAML::Value
-    << (f.diffusion_renormalised ? "renormalised" : "hydrostatic");
+  e << YAML::Key << "density_diffusion_form" << YAML::Value << f.density_diffusion_form;
   e << YAML::Key << "gamma" << YAML::Value << f.gamma;
   if (!sc.periodic_z()) e << YAML::Key << "wall_layers" << YAML::Value << f.wall_layers;
   e << YAML::Key << "enabled" << YAML::Value << f.enabled;
