@@ -180,7 +180,9 @@ MATRIX = [
 
 def matrix_markdown(entries):
     out = ["## Regime matrix (issue 14): every regime with the same defaults", "",
-           "No scene of the matrix sets a coupling key; the values are this report's rows and the validation tests' records. "
+           "No scene of the matrix sets a coupling key, and the reduced mode's block and suspension runs take the contact a "
+           "user gets (contact.stiffness auto, the default sub-steps; the full mode keeps the cases' stiffness, the sources'); "
+           "the values are this report's rows and the validation tests' records. "
            "PASS: every part is read from the regime's own run in this report and passes. PART: every part measured "
            "passes, but a part was left out of this report (the last column says which), stood in for by another run, "
            "or read from a validation test (ctest) rather than from the regime's own run.", "",

@@ -96,7 +96,7 @@ class SuspensionOfTwoSpecies:
         if mode == "reduced":
             w = self.width
             sets.update({"domain.size": f"[{w},{w},0.0036]", "particles.0.max": f"[{w},{w},0.0024]",
-                         "contact.stiffness": 1, "time.dem_steps_per_contact": 10, "time.end": 0.035})
+                         "contact.stiffness": "auto", "time.end": 0.035})  # a user's contact
         else:
             sets.update({"time.end": self.full_end})
         return [Run(self.name, self.case, sets, insitu=True)]
