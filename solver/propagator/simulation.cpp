@@ -408,8 +408,10 @@ void Simulation::compute_fluid_side(bool hold_spheres) {
     prepare_density_diffusion(f, dd);
     fluid_halo_.fill(f.diffusion_psi);
     fluid_halo_.fill(f.diffusion_volume);
-    if (dd.renormalised) compute_diffusion_gradient(f, fluid_pairs_, pair_scratch_);
-    for (auto* g : {&f.diffusion_gx, &f.diffusion_gy, &f.diffusion_gz}) fluid_halo_.fill(*g);
+    if (dd.renormalised) {
+      compute_diffusion_gradient(f, fluid_pairs_, pair_scratch_);
+      for (auto* g : {&f.diffusion_gx, &f.diffusion_gy, &f.diffusion_gz}) fluid_halo_.fill(*g);
+    }
   }
   omega_bounded_ =
       compute_density_rate(f, fluid_pairs_, pair_scratch_, variational, params_.fluid.split, dd);

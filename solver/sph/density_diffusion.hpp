@@ -42,10 +42,10 @@ struct DensityDiffusion {
   }
 };
 
-// psi and V of the owned particles (fluid: rho/eps - rho_H and m/rho; wall: 0 and 0), and
-// G = 0 (the `hydrostatic` form's; the `renormalised` one's comes from
-// compute_diffusion_gradient after the halo fill of these two); the density pass reads the
-// halo copies' after a halo fill.
+// psi and V of the owned particles (fluid: rho/eps - rho_H and m/rho; wall: 0 and 0); the
+// `renormalised` form's G comes from compute_diffusion_gradient after the halo fill of these
+// two (the `hydrostatic` form reads no G); the density pass reads the halo copies' after a
+// halo fill.
 inline void prepare_density_diffusion(FluidParticles& f, const DensityDiffusion& dd) {
   const long n = static_cast<long>(f.n_owned);
 #pragma omp parallel for schedule(static)
@@ -53,7 +53,6 @@ inline void prepare_density_diffusion(FluidParticles& f, const DensityDiffusion&
     const bool fluid = f.kind[a] == kFluid;
     f.diffusion_psi[a] = fluid ? f.rho[a] / f.eps[a] - dd.hydrostatic_density(f.z[a]) : 0.0;
     f.diffusion_volume[a] = fluid ? f.mass[a] / f.rho[a] : 0.0;
-    f.diffusion_gx[a] = f.diffusion_gy[a] = f.diffusion_gz[a] = 0.0;
   }
 }
 

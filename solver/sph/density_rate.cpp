@@ -38,11 +38,17 @@ inline double self_dwdh(const FluidParticles& f, long a) {  // the self term of 
   return f.mass[a] * kernel::dw_dh_q(0.0, f.inv_h[a]);
 }
 
+// Which diffusion term the rows add: none, the `hydrostatic` form's (G = 0, not read) or
+// the `renormalised` one's.
+enum class DiffusionRows { kNone, kHydrostatic, kRenormalised };
+
 // Rows [lo, hi) of the half list, one pair at a time: the skin's entries are skipped, an
 // owned b gets its share at once.
-template <bool kDiffusion>
+template <DiffusionRows kRows>
 void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, PairAccumulator& acc,
                            int t, long lo, long hi) {
+  constexpr bool kDiffusion = kRows != DiffusionRows::kNone;
+  constexpr bool kG = kRows == DiffusionRows::kRenormalised;
   const auto n = static_cast<std::uint32_t>(f.n_owned);
   for (long a = lo; a < hi; ++a) {
     const double ha = f.h[a], inv_ha = f.inv_h[a], ma = f.mass[a];
@@ -51,9 +57,8 @@ void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, P
     double sum_dwdh = self_dwdh(f, a), sum_div = 0.0, sum_diff = 0.0;
     const double psi_a = kDiffusion ? f.diffusion_psi[a] : 0.0;
     const double vol_a = kDiffusion ? f.diffusion_volume[a] : 0.0;
-    const double gxa = kDiffusion ? f.diffusion_gx[a] : 0.0,
-                 gya = kDiffusion ? f.diffusion_gy[a] : 0.0,
-                 gza = kDiffusion ? f.diffusion_gz[a] : 0.0;
+    const double gxa = kG ? f.diffusion_gx[a] : 0.0, gya = kG ? f.diffusion_gy[a] : 0.0,
+                 gza = kG ? f.diffusion_gz[a] : 0.0;
     for (std::uint32_t k = half.begin(a); k < half.end(a); ++k) {
       const std::uint32_t b = half.neighbour[k];
       const double dx = xa - f.x[b], dy = ya - f.y[b], dz = za - f.z[b];
@@ -66,8 +71,9 @@ void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, P
       sum_div += d.div_a;
       const double dpsi_f =
           kDiffusion
-              ? psi_difference(psi_a, f.diffusion_psi[b], gxa + f.diffusion_gx[b],
-                               gya + f.diffusion_gy[b], gza + f.diffusion_gz[b], dx, dy, dz) *
+              ? (kG ? psi_difference(psi_a, f.diffusion_psi[b], gxa + f.diffusion_gx[b],
+                                     gya + f.diffusion_gy[b], gza + f.diffusion_gz[b], dx, dy, dz)
+                    : f.diffusion_psi[b] - psi_a) *
                     d.minus_f
               : 0.0;
       if constexpr (kDiffusion) sum_diff += dpsi_f * f.diffusion_volume[b];
@@ -88,9 +94,11 @@ void density_rows_baseline(const FluidParticles& f, const NeighbourList& half, P
 // The same rows, each row's pairs in eight lanes: b's shares are kept per entry and
 // scattered after the vectorised loop to the owned b (a halo b's owner takes the pair from
 // its own row, as in the scalar rows); the skin's entries are evaluated and come out zero.
-template <bool kDiffusion>
+template <DiffusionRows kRows>
 inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& half,
                                PairAccumulator& acc, int t, long lo, long hi) {
+  constexpr bool kDiffusion = kRows != DiffusionRows::kNone;
+  constexpr bool kG = kRows == DiffusionRows::kRenormalised;
   const auto n = static_cast<std::uint32_t>(f.n_owned);
   const double* __restrict x = f.x.data();
   const double* __restrict y = f.y.data();
@@ -111,8 +119,7 @@ inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& hal
     const double xa = x[a], ya = y[a], za = z[a];
     const double vxa = vx[a], vya = vy[a], vza = vz[a];
     const double psi_a = kDiffusion ? psi[a] : 0.0, vol_a = kDiffusion ? vol[a] : 0.0;
-    const double gxa = kDiffusion ? gx[a] : 0.0, gya = kDiffusion ? gy[a] : 0.0,
-                 gza = kDiffusion ? gz[a] : 0.0;
+    const double gxa = kG ? gx[a] : 0.0, gya = kG ? gy[a] : 0.0, gza = kG ? gz[a] : 0.0;
     const std::uint32_t* __restrict nb = half.neighbour.data() + half.begin(a);
     const std::uint32_t len = half.end(a) - half.begin(a);
     double sum_dwdh = self_dwdh(f, a), sum_div = 0.0, sum_diff = 0.0;
@@ -134,7 +141,8 @@ inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& hal
       mirror_div[k] = d.div_b;
       if constexpr (kDiffusion) {
         const double dpsi_f =
-            psi_difference(psi_a, psi[b], gxa + gx[b], gya + gy[b], gza + gz[b], dx, dy, dz) *
+            (kG ? psi_difference(psi_a, psi[b], gxa + gx[b], gya + gy[b], gza + gz[b], dx, dy, dz)
+                : psi[b] - psi_a) *
             d.minus_f;
         sum_diff += dpsi_f * live * vol[b];
         mirror_diff[k] = -dpsi_f * vol_a;
@@ -156,21 +164,38 @@ inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& hal
 
 SPHDEM_TARGET_AVX512 void density_rows_avx512(const FluidParticles& f, const NeighbourList& half,
                                               PairAccumulator& acc, int t, long lo, long hi,
-                                              bool diffusion) {
-  if (diffusion)
-    density_rows_lanes<true>(f, half, acc, t, lo, hi);
+                                              DiffusionRows rows) {
+  if (rows == DiffusionRows::kRenormalised)
+    density_rows_lanes<DiffusionRows::kRenormalised>(f, half, acc, t, lo, hi);
+  else if (rows == DiffusionRows::kHydrostatic)
+    density_rows_lanes<DiffusionRows::kHydrostatic>(f, half, acc, t, lo, hi);
   else
-    density_rows_lanes<false>(f, half, acc, t, lo, hi);
+    density_rows_lanes<DiffusionRows::kNone>(f, half, acc, t, lo, hi);
 }
 
 // The scalar rows compiled for x86-64-v3 (fused multiply-add).
+template <DiffusionRows kRows>
 SPHDEM_TARGET_AVX2 void density_rows_avx2(const FluidParticles& f, const NeighbourList& half,
-                                          PairAccumulator& acc, int t, long lo, long hi,
-                                          bool diffusion) {
-  if (diffusion)
-    density_rows_baseline<true>(f, half, acc, t, lo, hi);
-  else
-    density_rows_baseline<false>(f, half, acc, t, lo, hi);
+                                          PairAccumulator& acc, int t, long lo, long hi) {
+  density_rows_baseline<kRows>(f, half, acc, t, lo, hi);
+}
+
+// The rows for the instruction set and the diffusion term.
+void density_rows(const FluidParticles& f, const NeighbourList& half, PairAccumulator& acc, int t,
+                  long lo, long hi, DiffusionRows rows, PairIsa isa) {
+  if (isa == PairIsa::kAvx512) return density_rows_avx512(f, half, acc, t, lo, hi, rows);
+  const bool avx2 = isa == PairIsa::kAvx2;
+  switch (rows) {
+    case DiffusionRows::kNone:
+      return avx2 ? density_rows_avx2<DiffusionRows::kNone>(f, half, acc, t, lo, hi)
+                  : density_rows_baseline<DiffusionRows::kNone>(f, half, acc, t, lo, hi);
+    case DiffusionRows::kHydrostatic:
+      return avx2 ? density_rows_avx2<DiffusionRows::kHydrostatic>(f, half, acc, t, lo, hi)
+                  : density_rows_baseline<DiffusionRows::kHydrostatic>(f, half, acc, t, lo, hi);
+    case DiffusionRows::kRenormalised:
+      return avx2 ? density_rows_avx2<DiffusionRows::kRenormalised>(f, half, acc, t, lo, hi)
+                  : density_rows_baseline<DiffusionRows::kRenormalised>(f, half, acc, t, lo, hi);
+  }
 }
 
 }  // namespace
@@ -180,20 +205,16 @@ std::size_t compute_density_rate(FluidParticles& f, const NeighbourList& half, P
                                  const DensityDiffusion& dd, PairIsa isa) {
   const long n = static_cast<long>(f.n_owned);
   const bool diffusion = dd.on();
+  const DiffusionRows rows = !diffusion        ? DiffusionRows::kNone
+                             : dd.renormalised ? DiffusionRows::kRenormalised
+                                               : DiffusionRows::kHydrostatic;
   // per particle: sum_b m_b dW/dh, sum_b m_b u_ab . grad W (and the diffusion's sum)
   acc.reset(n, diffusion ? 3 : 2);
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
     const auto [lo, hi] = thread_rows(half.offset, n, kPairRowCost);
-    if (isa == PairIsa::kAvx512)
-      density_rows_avx512(f, half, acc, t, lo, hi, diffusion);
-    else if (isa == PairIsa::kAvx2)
-      density_rows_avx2(f, half, acc, t, lo, hi, diffusion);
-    else if (diffusion)
-      density_rows_baseline<true>(f, half, acc, t, lo, hi);
-    else
-      density_rows_baseline<false>(f, half, acc, t, lo, hi);
+    density_rows(f, half, acc, t, lo, hi, rows, isa);
   }
   const double diffusivity = 2.0 * dd.delta * dd.c0;  // D_a = diffusivity h_a eps_a sum
   std::size_t bounded = 0;

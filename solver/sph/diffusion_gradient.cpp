@@ -76,6 +76,15 @@ inline void gradient_rows_lanes(const FluidParticles& f, const NeighbourList& ha
     const std::uint32_t len = half.end(a) - half.begin(a);
     const std::uint32_t last = len == 0 ? 0 : len - 1, padded = (len + 7) & ~7u;
     double* __restrict terms = acc.entries(t, kFields * std::size_t{padded});
+    double* __restrict m0 = terms;        // field i at m0 + i padded: named, so that the compiler
+    double* __restrict m1 = m0 + padded;  // sees unit-stride stores (a 32-bit i padded + k
+    double* __restrict m2 = m1 + padded;  // may wrap, which made them scatters)
+    double* __restrict m3 = m2 + padded;
+    double* __restrict m4 = m3 + padded;
+    double* __restrict m5 = m4 + padded;
+    double* __restrict m6 = m5 + padded;
+    double* __restrict m7 = m6 + padded;
+    double* __restrict m8 = m7 + padded;
     double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0, s8 = 0;
 #pragma omp simd reduction(+ : s0, s1, s2, s3, s4, s5, s6, s7, s8)
     for (std::uint32_t k = 0; k < padded; ++k) {  // whole vectors: the tail repeats the last
@@ -87,12 +96,15 @@ inline void gradient_rows_lanes(const FluidParticles& f, const NeighbourList& ha
       s0 += vb * g.t[0], s1 += vb * g.t[1], s2 += vb * g.t[2];
       s3 += vb * g.t[3], s4 += vb * g.t[4], s5 += vb * g.t[5];
       s6 += vb * g.t[6], s7 += vb * g.t[7], s8 += vb * g.t[8];
-      for (int i = 0; i < kFields; ++i) terms[i * padded + k] = vol_a * g.t[i];
+      m0[k] = vol_a * g.t[0], m1[k] = vol_a * g.t[1], m2[k] = vol_a * g.t[2];
+      m3[k] = vol_a * g.t[3], m4[k] = vol_a * g.t[4], m5[k] = vol_a * g.t[5];
+      m6[k] = vol_a * g.t[6], m7[k] = vol_a * g.t[7], m8[k] = vol_a * g.t[8];
     }
     for (std::uint32_t k = 0; k < len; ++k) {
       if (nb[k] >= n) continue;  // a halo b: its owner's row gets the pair from its side
       double* rb = acc.row(t, nb[k]);
-      for (int i = 0; i < kFields; ++i) rb[i] += terms[i * padded + k];
+      rb[0] += m0[k], rb[1] += m1[k], rb[2] += m2[k], rb[3] += m3[k], rb[4] += m4[k];
+      rb[5] += m5[k], rb[6] += m6[k], rb[7] += m7[k], rb[8] += m8[k];
     }
     double* ra = acc.row(t, a);
     const double sums[kFields] = {s0, s1, s2, s3, s4, s5, s6, s7, s8};
