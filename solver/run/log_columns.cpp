@@ -45,11 +45,6 @@ const std::vector<LogColumn>& log_columns() {
        "fluid particles whose grad-h Ω (2.54) was clamped to [0.5, 2] in the last density-rate "
        "pass",
        false, [](std::string& r, D d, S) { put(r, "{}", d.omega_bounded); }},
-      {"excess_pore_pressure_base", "–",
-       "the base's excess pore pressure read in the first fluid layer (z < `fluid.spacing`): "
-       "the mean of (P_a − ρf |g| (H − z_a)) / (ρf |g| H), a point reading through the "
-       "kernel sums (`fluid_load_base` is the load; `analysis/pore_pressure.*`)",
-       false, [](std::string& r, D d, S) { put(r, "{:.6g}", d.excess_pore_pressure_base); }},
       {"wall_load_base", "–",
        "the spheres' contact load on the bottom wall, Σ k max(0, r_i − z_i) / (A ρf |g| H)", false,
        [](std::string& r, D d, S) { put(r, "{:.6g}", d.wall_load_base); }},

@@ -33,17 +33,6 @@ class SandColumn:
     LOAD = ("fluid_load_base: the forces of the wall particles on the column (SPH pairs with the fluid, "
             "variational pairs with the spheres) less the clear column's weight, i.e. the base's mean excess "
             "pore pressure as the wall feels it (analysis/pore_pressure.hpp)")
-    FIRST_LAYER = ("the first fluid layer's mean P − ρf g (H − z) (excess_pore_pressure_base) is a point reading, "
-                   "not a load. In the 1 m column with the defaults (validation/README.md, session 22: the layers "
-                   "from the VTK snapshots) it reads the suspension's pressure until the bed forms (0.03–0.12 s: "
-                   "0.145 against 0.147–0.155 in the layers above and a load of 0.157), then rises through the bed "
-                   "(0.21–0.30 s: 0.216, 0.195, 0.180 in the three layers the bed fills, 0.163–0.168 above it) while "
-                   "the load stays at the pressure above the bed (0.170) and the contacts carry the bed's own grains "
-                   "(0.016): the two close the momentum balance. The departure from the load follows the pressure "
-                   "the pairs carry (P − P_h, the settling excess), its size and sign set by the kernel's width, and "
-                   "vanishes once nothing is carried (the 0.1 m column at rest, a packed bed under water: "
-                   "validation/README.md, session 23): the kernel sums at the wall, not a pressure the base feels. "
-                   "With the drag's fields on 1.5 h (the case's keys until issue 14) it reached 0.36 (+98 %)")
     BALANCE = ("conservation check: while every grain settles at a steady speed clear of the base, the fluid "
                "carries their whole buoyant weight, whatever the drag law")
     SHORT = ("the 0.1 m column is too short for eq. 15: its grains reach their steady speed (~0.1 s) after "
@@ -149,15 +138,15 @@ class SandColumn:
         return time_average(t, r.log[column], t[-1] - periods * r.acoustic_period(), t[-1])
 
     def peak_rows(self, r, how, primary):
-        """The peak of the base's excess pore pressure, as the wall feels it and as the first
-        fluid layer reads it; the first is the check when primary."""
+        """The peak of the base's excess pore pressure as the wall feels it (the fluid's load on
+        it); the check when primary."""
         if not r.ok or r.log is None:
             return failed_run_rows(self.name, r, "peak excess pore pressure" + how)
         u_th, t = self.eq15(r), r.log["time"]
-        load, first = self.period_mean(r, "fluid_load_base"), self.period_mean(r, "excess_pore_pressure_base")
+        load = self.period_mean(r, "fluid_load_base")
         wall = self.period_mean(r, "wall_load_base")
         v = np.abs(r.log[f"vz_mean:{r.case['species'][0]['name']}"])
-        k, k1 = int(np.nanargmax(load)), int(np.nanargmax(first))
+        k = int(np.nanargmax(load))
         state = (f"at the peak the spheres' wall load is {wall[k]:.3f} and the grains' mean speed "
                  f"{v[k]:.3g} m/s (largest {v.max():.3g} m/s); the 4H/c0 mean spans {np.nanmin(load):.4f}–"
                  f"{np.nanmax(load):.4f} over the run (windows centred in [{t[0] + r.acoustic_period() / 2:.3g}, "
@@ -166,10 +155,7 @@ class SandColumn:
         return [Row(self.name, f"peak excess pore pressure at the base / (ρf g H), the fluid's load on the wall, "
                                f"mean over 4H/c0, at t = {t[k]:.3g} s{how}", f"{u_th:.4f}", src, f"{load[k]:.4f}",
                     load[k] / u_th - 1, 0.10 if primary else None, r, kind="health",
-                    note=self.BALANCE + "; " + self.LOAD + "; " + state + ("" if primary else "; " + self.SHORT)),
-                Row(self.name, f"peak excess pore pressure at the base / (ρf g H), first fluid layer, mean over "
-                               f"4H/c0, at t = {t[k1]:.3g} s{how}", f"{u_th:.4f}", src, f"{first[k1]:.4f}",
-                    first[k1] / u_th - 1, None, r, kind="health", note=self.BALANCE + "; " + self.FIRST_LAYER)]
+                    note=self.BALANCE + "; " + self.LOAD + "; " + state + ("" if primary else "; " + self.SHORT))]
 
     def speed_rows(self, r):
         """The grains' settling speed against Masliyah's multispecies hindered settling with
@@ -318,7 +304,6 @@ class SandColumn:
         sand = r.case["species"][0]
         u_th, t = self.eq15(r), r.log["time"]
         load, wall = self.end_mean(r, "fluid_load_base"), self.end_mean(r, "wall_load_base")
-        first = self.end_mean(r, "excess_pore_pressure_base")
         v_end = abs(r.log[f"vz_mean:{sand['name']}"][-1])
         rows.append(Row(self.name, f"momentum balance of the bed at rest: the fluid's load on the wall + the spheres' "
                                    f"contact load, mean over the last 2 × 4H/c0 (to t = {t[-1]:.2g} s){how}",
@@ -326,8 +311,7 @@ class SandColumn:
                         "is in one of the two)", f"{load:.4f} + {wall:.4f} = {load + wall:.4f}",
                         (load + wall) / u_th - 1, 0.03, r, kind="health",
                         note=f"conservation check (any model); a bed at rest puts its weight on its contacts: the "
-                             f"fluid's share {load / u_th:.1%} is open; the first fluid layer's reading at rest "
-                             f"{first:.4f} ({first / u_th:.2f} × eq. 15) is not a force; mean grain speed at the end "
+                             f"fluid's share {load / u_th:.1%} is open; mean grain speed at the end "
                              f"{v_end * 1e3:.2g} mm/s; 3 %: the case's target porosity against the one RSA placed "
                              f"(0.3 %), the log's samples (5 ms) of the column's ringing (±0.02 at ~30 ms)"))
         bd = read_csv(os.path.join(r.dir, "bulk_density.csv"))
