@@ -109,11 +109,13 @@ class Regime:
 
 MATRIX = [
     Regime("one 100 µm sphere released 1, 7 and 30 mm deep", "single_particle",
-           "slip within 1 % of (4.1) at each depth", rows=[("single_particle", "superficial slip")],
+           "slip within 1 % of (4.1) at each depth; the case's at each preset (full mode: fast, balanced, accurate)",
+           rows=[("single_particle", "superficial slip")],
            gtests=[("regime_depth_validation", "SphereAtDepth.SevenMillimetres",
                     [("slip_error", "7 mm deep: slip against (4.1)")]),
                    ("regime_depth_validation", "SphereAtDepth.ThirtyMillimetres",
-                    [("slip_error", "30 mm deep")])]),
+                    [("slip_error", "30 mm deep")])],
+           elsewhere="the presets fast and accurate (the case runs at balanced): the full mode only"),
     Regime("one 2.8 mm grain in a 1 m water column (c0 ≈ 44 m/s)", "inertial grain",
            "terminal slip within 2 % of Brown–Lawler",
            gtests=[("regime_depth_validation", "InertialGrain.TerminalSlipAtTheMetreColumnsSoundSpeed",
@@ -121,7 +123,9 @@ MATRIX = [
            elsewhere="reduced: a 0.15 m column at the 1 m column's c0 = 44 m/s and resolution (the extra drag "
                      "grows with c0, not with the depth itself); the grain in the 1 m column not run"),
     Regime("blocks ε = 0.9 and 0.8, 2 and 4 mm tall", "block_monodisperse",
-           "infinite-block slip within 2 % of (4.4)", rows=[("block_monodisperse", "ε = 0.8, infinite-block", 0.02)]),
+           "infinite-block slip within 2 % of (4.4); ε = 0.8 at each preset (full mode: fast, balanced, accurate)",
+           rows=[("block_monodisperse", "ε = 0.8, infinite-block", 0.02)],
+           elsewhere="the presets fast and accurate (the case runs at balanced): the full mode only"),
     Regime("the monodisperse suspension", "suspension_monodisperse",
            "interface within 8 % of Kynch; a sediment forms and comes to rest (density error < 1 %, fluid kinetic "
            "energy decaying, sediment voidage 0.36–0.45)",
