@@ -162,15 +162,10 @@ inline void density_rows_lanes(const FluidParticles& f, const NeighbourList& hal
   }
 }
 
+template <DiffusionRows kRows>
 SPHDEM_TARGET_AVX512 void density_rows_avx512(const FluidParticles& f, const NeighbourList& half,
-                                              PairAccumulator& acc, int t, long lo, long hi,
-                                              DiffusionRows rows) {
-  if (rows == DiffusionRows::kRenormalised)
-    density_rows_lanes<DiffusionRows::kRenormalised>(f, half, acc, t, lo, hi);
-  else if (rows == DiffusionRows::kHydrostatic)
-    density_rows_lanes<DiffusionRows::kHydrostatic>(f, half, acc, t, lo, hi);
-  else
-    density_rows_lanes<DiffusionRows::kNone>(f, half, acc, t, lo, hi);
+                                              PairAccumulator& acc, int t, long lo, long hi) {
+  density_rows_lanes<kRows>(f, half, acc, t, lo, hi);
 }
 
 // The scalar rows compiled for x86-64-v3 (fused multiply-add).
@@ -180,21 +175,28 @@ SPHDEM_TARGET_AVX2 void density_rows_avx2(const FluidParticles& f, const Neighbo
   density_rows_baseline<kRows>(f, half, acc, t, lo, hi);
 }
 
-// The rows for the instruction set and the diffusion term.
+// The rows for the instruction set.
+template <DiffusionRows kRows>
+void density_rows(const FluidParticles& f, const NeighbourList& half, PairAccumulator& acc, int t,
+                  long lo, long hi, PairIsa isa) {
+  if (isa == PairIsa::kAvx512)
+    density_rows_avx512<kRows>(f, half, acc, t, lo, hi);
+  else if (isa == PairIsa::kAvx2)
+    density_rows_avx2<kRows>(f, half, acc, t, lo, hi);
+  else
+    density_rows_baseline<kRows>(f, half, acc, t, lo, hi);
+}
+
+// The rows for the diffusion term and the instruction set.
 void density_rows(const FluidParticles& f, const NeighbourList& half, PairAccumulator& acc, int t,
                   long lo, long hi, DiffusionRows rows, PairIsa isa) {
-  if (isa == PairIsa::kAvx512) return density_rows_avx512(f, half, acc, t, lo, hi, rows);
-  const bool avx2 = isa == PairIsa::kAvx2;
   switch (rows) {
     case DiffusionRows::kNone:
-      return avx2 ? density_rows_avx2<DiffusionRows::kNone>(f, half, acc, t, lo, hi)
-                  : density_rows_baseline<DiffusionRows::kNone>(f, half, acc, t, lo, hi);
+      return density_rows<DiffusionRows::kNone>(f, half, acc, t, lo, hi, isa);
     case DiffusionRows::kHydrostatic:
-      return avx2 ? density_rows_avx2<DiffusionRows::kHydrostatic>(f, half, acc, t, lo, hi)
-                  : density_rows_baseline<DiffusionRows::kHydrostatic>(f, half, acc, t, lo, hi);
+      return density_rows<DiffusionRows::kHydrostatic>(f, half, acc, t, lo, hi, isa);
     case DiffusionRows::kRenormalised:
-      return avx2 ? density_rows_avx2<DiffusionRows::kRenormalised>(f, half, acc, t, lo, hi)
-                  : density_rows_baseline<DiffusionRows::kRenormalised>(f, half, acc, t, lo, hi);
+      return density_rows<DiffusionRows::kRenormalised>(f, half, acc, t, lo, hi, isa);
   }
 }
 
