@@ -2,14 +2,26 @@
 evaluates and prints them. A scene: name, runs(mode) -> [Run], evaluate(results, ctx) -> [Row]."""
 from .block_bidisperse import BlockBidisperse
 from .block_monodisperse import BlockMonodisperse
+from .convergence import Convergence
 from .fluidised_bed_scene import FluidisedBed
 from .homogeneous_suspensions import HomogeneousSuspensions
 from .sand_column import SandColumn
+from .seeds import Seeds
 from .single_particle import SingleParticle
 from .suspension_monodisperse import SuspensionMonodisperse
 from .suspension_two_species import SuspensionOfTwoSpecies
 from .theory_check import TheoryCheck
 from .untuned_fronts import UntunedFronts
+
+
+def two_densities():
+    # 0.06 s left the light front 0.71 layers of travel (2.1 mm/s over 42 ms): 0.1 s gives ~1.8
+    return SuspensionOfTwoSpecies("suspension_two_densities", "cases/suspension_two_densities.yaml", 0.002, False, 0.1)
+
+
+def bidisperse():
+    # 0.06 s left the small front 1.26 layers of travel (3.43 mm/s over 42 ms): 0.08 s gives ~2
+    return SuspensionOfTwoSpecies("suspension_bidisperse", "cases/suspension_bidisperse.yaml", 0.00198, True, 0.08)
 
 
 # One entry per scene. To add a scene: a class with `name`, `runs(mode)` and
@@ -21,11 +33,12 @@ SCENES = [
     SuspensionMonodisperse(),
     UntunedFronts(),   # issue 38: a scene no case ships, every preset (full mode only)
     BlockBidisperse(),
-    # 0.06 s left the light front 0.71 layers of travel (2.1 mm/s over 42 ms): 0.1 s gives ~1.8
-    SuspensionOfTwoSpecies("suspension_two_densities", "cases/suspension_two_densities.yaml", 0.002, False, 0.1),
-    # 0.06 s left the small front 1.26 layers of travel (3.43 mm/s over 42 ms): 0.08 s gives ~2
-    SuspensionOfTwoSpecies("suspension_bidisperse", "cases/suspension_bidisperse.yaml", 0.00198, True, 0.08),
+    two_densities(),
+    bidisperse(),
     SandColumn(),
     HomogeneousSuspensions(),
     FluidisedBed(),
+    Convergence(),     # issue 38: dx, dx/1.5, dx/2 at a fixed coupling kernel; c0, CFL, box (full mode only)
+    # issue 38: the settling suspensions' rows on 4 placements (full mode only), instances of their own
+    Seeds([SuspensionMonodisperse(), two_densities(), bidisperse()]),
 ]
