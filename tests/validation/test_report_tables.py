@@ -6,11 +6,14 @@ import os
 import sys
 import unittest
 
+import numpy as np
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "validation"))
 from vreport.rows import Row  # noqa: E402
 from vreport.runs import Run  # noqa: E402
+from vreport.scenes.common import front_speed_with_beat  # noqa: E402
 from vreport.scenes.convergence import Convergence, observed_order  # noqa: E402
 from vreport.scenes.seeds import Seeds  # noqa: E402
 
@@ -48,6 +51,26 @@ class ObservedOrder(unittest.TestCase):
                 self.assertAlmostEqual(h * s["coupling.drag_kernel_scale"], 2e-4 * Convergence.BASE_SCALE[1])
             self.assertNotIn("coupling.sphere_kernel_scale", runs[f"{prefix}_dx1"])   # the defaults' choice
         self.assertEqual(Convergence().runs("reduced"), [])
+
+
+class FrontWithBeat(unittest.TestCase):
+    def test_the_lattice_beat_does_not_tilt_the_speed(self):
+        dx, u, amp = 5e-4, 1.15e-3, 1.6e-5     # the untuned scene at eps0 0.7 (session 40)
+        t = np.arange(0.2, 0.9, 0.002)        # 1.6 periods dx/u: a line alone tilts with the phase
+        line = []
+        for phase in (0.0, 1.6, 4.7):
+            z = 9.7e-3 - u * t + amp * np.sin(2 * np.pi * u * t / dx + phase)
+            got, a = front_speed_with_beat(t, z, dx)
+            self.assertAlmostEqual(got / u, 1.0, places=6)
+            self.assertAlmostEqual(a / amp, 1.0, places=4)
+            line.append(abs(-np.polyfit(t, z, 1)[0] / u - 1))
+        self.assertGreater(max(line), 0.01)   # what a line alone reads (1.2 % at most here)
+
+    def test_a_window_under_one_period_is_the_line(self):
+        t = np.linspace(0, 0.1, 50)
+        got, a = front_speed_with_beat(t, 1e-3 - 2e-3 * t, 5e-4)
+        self.assertAlmostEqual(got, 2e-3)
+        self.assertTrue(math.isnan(a))
 
 
 class FakeScene:

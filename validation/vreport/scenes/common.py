@@ -31,3 +31,20 @@ def face_extrapolation(short, tall, slip_and_reference):
     (h1, e1), (h2, e2) = pts
     b = (e1 - e2) / (1 / h1 - 1 / h2)
     return h1, e1, h2, e2, e1 - b / h1, b
+
+
+def front_speed_with_beat(t, z, dx):
+    """(speed -dz/dt, beat amplitude) of an interface z(t) fitted as a line plus the beat of
+    the fluid's lattice: a front crossing fluid layers dx apart at speed u wobbles with period
+    dx/u (validation/README.md, session 40), and a line alone over a window that is not a whole
+    number of those periods tilts with the beat's phase. z = a − u t + c sin(ωt) + s cos(ωt),
+    ω = 2π u/dx, u found by iterating from the line's. A window shorter than one period gets
+    the line alone (amplitude nan)."""
+    u = -np.polyfit(t, z, 1)[0]
+    if u <= 0 or (t[-1] - t[0]) * u < dx:
+        return u, float("nan")
+    for _ in range(5):
+        w = 2 * np.pi * u / dx
+        coef = np.linalg.lstsq(np.c_[np.ones_like(t), t, np.sin(w * t), np.cos(w * t)], z, rcond=None)[0]
+        u = -coef[1]
+    return u, float(np.hypot(coef[2], coef[3]))
