@@ -56,6 +56,10 @@ class Convergence:
     LEVELS = (1, 1.5, 2)          # dx / the level's spacing
     BASE_SCALE = (1.0, 1.0)       # (sphere, drag) kernel scales `auto` gives both scenes at dx
     GCI_SAFETY = 1.25             # Roache's factor of safety for three levels
+    # an observed order outside this range is not extrapolated (Celik et al. 2008, J. Fluids
+    # Eng. 130: the levels are then not in the asymptotic range, or the row's scatter
+    # exceeds the differences): the finest level's error with the three levels' spread
+    ORDER_RANGE = (0.5, 5.0)
     VARIANTS = {"c0x2": "c0 × 2", "cfl_half": "CFL × ½", "box_x2": "box twice as wide"}
 
     def __init__(self):
@@ -161,11 +165,14 @@ class Convergence:
         e = [x[1] for x in levels]
         p = observed_order(h, e)
         spread = max(e) - min(e)
-        if p is None:
-            sim = f"no monotone order: errors {', '.join(f'{100 * x:+.2f} %' for x in e)}; spread {100 * spread:.2f} points"
+        if p is None or not self.ORDER_RANGE[0] <= p <= self.ORDER_RANGE[1]:
+            why = ("oscillatory or flat" if p is None else
+                   f"p = {p:.2f}, outside {self.ORDER_RANGE[0]:g}–{self.ORDER_RANGE[1]:g}: not in the asymptotic range")
+            sim = (f"no order to extrapolate with ({why}): errors {', '.join(f'{100 * x:+.2f} %' for x in e)}; "
+                   f"spread {100 * spread:.2f} points")
             return Row(self.name, f"{label}: observed order over dx, dx/1.5, dx/2", "(4.4)", "Di Felice (4.4)", sim,
                        e[-1], None, levels[-1][2], kind="comparison", reference_kind="own-closure",
-                       note="oscillatory or flat: the finest level's error with the three levels' spread as its band")
+                       note="the finest level's error, the three levels' spread its band")
         r = h[1] / h[2]
         e_inf = e[2] + (e[2] - e[1]) / (r ** p - 1)
         gci = self.GCI_SAFETY * abs(e[2] - e[1]) / (r ** p - 1)
