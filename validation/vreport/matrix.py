@@ -144,7 +144,7 @@ MATRIX = [
            "upper interface within 8 % of Kynch (4.4) over the whole fall (0.2 s to 1.6 s or 1 mm above the "
            "sediment), ε0 = 0.7, 0.8, 0.9, 0.95 at h/d = 2, at each of fast, balanced and accurate",
            rows=[("untuned_fronts", UntunedFronts.PREFIX)],
-           elsewhere="full mode only (12 runs of 3–10 min each); the reduced report leaves it out"),
+           elsewhere="full mode only (12 runs of 2–30 min each); the reduced report leaves it out"),
     Regime("a random packed bed under clear water, in contact, under gravity",
            "packed-bed stability: 2523 sand grains (2.8 mm) at ε 0.42 under 80 mm of water, every coupling, time-step "
            "and contact-stiffness key at its default",

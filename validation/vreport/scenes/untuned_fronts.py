@@ -56,7 +56,7 @@ class UntunedFronts:
         if not results:
             return [Row(self.name, self.PREFIX + ", ε0 0.7–0.95, every preset", "–", "Kynch with (4.4)", "not run",
                         None, self.TARGET, None, kind="comparison", reference_kind="own-closure",
-                        skip="12 runs of 3–10 min each (1.6 s of settling): full mode only")]
+                        skip="12 runs of 2–30 min each (1.6 s of settling): full mode only")]
         rows, fits = [], []
         for key, r in results.items():
             if not r.ok or r.log is None:
