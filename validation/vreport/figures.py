@@ -18,3 +18,13 @@ class Context:
         fig.savefig(os.path.join(self.fig_dir, name), dpi=110)
         plt.close(fig)
         self.figures.append(name)
+
+
+class NoFigures:
+    """A context that drops the figures of a scene evaluated for its numbers only (the
+    convergence and seed scenes evaluate other scenes' runs)."""
+    figures = ()
+
+    @staticmethod
+    def save(fig, name):
+        plt.close(fig)

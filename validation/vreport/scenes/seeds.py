@@ -5,9 +5,9 @@ import re
 import numpy as np
 import yaml
 
+from ..figures import NoFigures
 from ..rows import Row, failed_run_rows
 from ..runs import Run
-from .convergence import NoFigures
 
 
 class Seeds:
