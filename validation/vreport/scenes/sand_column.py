@@ -59,7 +59,8 @@ class SandColumn:
         if r is None:
             return rows + [Row(self.name, "peak excess pore pressure, segregation, bed bulk density", "–", "–", "–",
                                None, None, None, kind="comparison", reference_kind="independent",
-                               skip="reduced mode: ctest sand_column_validation runs the reduced column")]
+                               skip="reduced mode: ctest sand_column_validation runs the reduced column, its "
+                                    "case's seed (the segregation pools four: full mode, or the test's --pooled)")]
         start = results.get("sand_column_1m_start")
         if start is not None:
             rows += self.peak_rows(start, ", 1 m column (the case), first 0.3 s", True) + self.speed_rows(start)
