@@ -17,7 +17,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMP_NUM_THREADS=1
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
-short=(--set time.end=0.002 --set startup.relax_steps=2 --set insitu.every=0.00004
+short=(--set time.end=0.002 --set startup.relax_steps=2 --set insitu.every=0.0001
   --set coupling.voidage_smoothing=double --set particles.0.rigid=true)
 
 env -u DISPLAY "$bin" run "$case" --out one "${short[@]}" >one.log 2>&1 || { cat one.log; fail "1 rank"; }
