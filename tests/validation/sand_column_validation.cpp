@@ -190,7 +190,7 @@ class SandColumn : public ::testing::Test {
     r.seeds.push_back(sc.particles.at(0).seed);
     r.seed_thirds.push_back(r.thirds);
     for (const std::int64_t seed : kExtraSeeds) {
-      if (!g_pooled) break;
+      if (!g_pooled) break;  // the one column only (as ctest runs it)
       const auto w0 = std::chrono::steady_clock::now();
       Scene other = sc;
       other.particles.at(0).seed = seed;
@@ -334,7 +334,7 @@ TEST_F(SandColumn, CoarseGrainsAtTheBase) {
   if (!g_pooled)
     GTEST_SKIP()
         << "one 0.1 m column segregates by only 2-3 random-mixture deviations, as much as "
-           "the statistic's scatter: the check pools four seeds (--pooled, ~7 min more; the "
+           "the statistic's scatter: the check pools four seeds (--pooled, ~6 min more; the "
            "full validation report runs them too)";
   EXPECT_GT(pooled, 3.0);
 }
