@@ -1,5 +1,8 @@
 """Measurements more than one scene makes: a time average over a window, a run's last
-whole acoustic periods, and a block's error extrapolated to a block without faces."""
+whole acoustic periods, a block's error extrapolated to a block without faces, a front's
+speed with the lattice's beat, and a suspension's equivalent sharp interface."""
+import os
+
 import numpy as np
 
 
@@ -48,3 +51,30 @@ def front_speed_with_beat(t, z, dx):
         coef = np.linalg.lstsq(np.c_[np.ones_like(t), t, np.sin(w * t), np.cos(w * t)], z, rcond=None)[0]
         u = -coef[1]
     return u, float(np.hypot(coef[2], coef[3]))
+
+
+def equivalent_interface(r, t_lo, t_hi):
+    """A suspension's equivalent sharp interface from the in-situ voidage map: the solid
+    volume above a level z_ref inside the homogeneous suspension, spread at its initial
+    voidage eps_s, z_eq = z_ref + int_{z_ref} (1 - eps) dz / (1 - eps_s). By mass
+    conservation it falls at the flux through z_ref over (1 - eps_s), i.e. the speed of the
+    bulk spheres, whatever the shape of the front. z_ref is midway between the lowest upper
+    interface and the highest sediment top of [t_lo, t_hi], each a kernel support away.
+    Returns (z_ref, eps_s, times, z_eq) over the window, or None without the map, or where
+    front and sediment come within two supports, or with fewer than 4 maps in the window."""
+    vh = os.path.join(r.dir, "insitu", "voidage_height.h5")
+    if not os.path.exists(vh) or t_hi <= t_lo:
+        return None
+    import h5py
+    with h5py.File(vh, "r") as f:
+        tv, zv, ev = f["time"][:], f["z"][:], f["voidage"][:]
+    zt, zb = r.interfaces["z_top"], r.interfaces["z_bottom"]
+    sel = (tv >= t_lo - 1e-9) & (tv <= t_hi + 1e-9)
+    h2 = 2 * r.case["fluid"]["smoothing_factor"] * r.case["fluid"]["spacing"]   # kernel support
+    z_ref = 0.5 * (np.nanmin(zt[sel]) - h2 + np.nanmax(zb[sel]) + h2)
+    eps_s = np.median(ev[0][(zv > h2) & (zv < zt[0] - h2)])
+    above = zv >= z_ref
+    z_eq = np.array([z_ref + np.trapz(1 - e[above], zv[above]) / (1 - eps_s) for e in ev[sel]])
+    if not (np.nanmin(zt[sel]) - h2 > np.nanmax(zb[sel]) + h2 and sel.sum() >= 4):
+        return None
+    return z_ref, eps_s, tv[sel], z_eq

@@ -1,8 +1,6 @@
 """Scene suspension_monodisperse (thesis §4.7, §5.4): the clear-liquid interface of a
 homogeneous suspension against Kynch with (4.4), the final sediment, and (full mode, --long)
 the case as shipped to its end."""
-import os
-
 import numpy as np
 
 import theory
@@ -10,7 +8,7 @@ import theory
 from ..figures import plt
 from ..rows import Row, failed_run_rows
 from ..runs import Run
-from .common import time_average
+from .common import equivalent_interface, time_average
 
 
 class SuspensionMonodisperse:
@@ -74,34 +72,21 @@ class SuspensionMonodisperse:
         return t_lo, t_hi, nper, ti, zt, (ti >= t_lo - 1e-9) & (ti <= t_hi + 1e-9) & np.isfinite(zt)
 
     def sharp_interface(self, r, u_k, t_lo, t_hi):
-        """Equivalent sharp interface from the voidage map: the solid volume above a level
-        z_ref inside the homogeneous suspension, spread at the suspension's voidage,
-        z_eq = z_ref + int_{z_ref} (1 - eps) dz / (1 - eps_s). By mass conservation it falls
-        at the flux through z_ref over (1 - eps_s), i.e. the speed of the bulk spheres,
-        whatever the shape of the front: a cross-check of the interface's criterion. Returns
-        (its row, (times, z_eq, speed)), or (None, None) without the map or a window."""
-        vh = os.path.join(r.dir, "insitu", "voidage_height.h5")
-        if not os.path.exists(vh) or t_hi <= t_lo:
+        """The equivalent sharp interface (common.equivalent_interface: the bulk spheres'
+        speed by mass conservation, whatever the shape of the front), a cross-check of the
+        interface's criterion. Returns (its row, (times, z_eq, speed)), or (None, None)
+        without the map or a window."""
+        eq = equivalent_interface(r, t_lo, t_hi)
+        if eq is None:
             return None, None
-        import h5py
-        with h5py.File(vh, "r") as f:
-            tv, zv, ev = f["time"][:], f["z"][:], f["voidage"][:]
-        zt, zb = r.interfaces["z_top"], r.interfaces["z_bottom"]
-        sel = (tv >= t_lo - 1e-9) & (tv <= t_hi + 1e-9)
-        h2 = 2 * r.case["fluid"]["smoothing_factor"] * r.case["fluid"]["spacing"]   # kernel support
-        z_ref = 0.5 * (np.nanmin(zt[sel]) - h2 + np.nanmax(zb[sel]) + h2)
-        eps_s = np.median(ev[0][(zv > h2) & (zv < zt[0] - h2)])
-        above = zv >= z_ref
-        z_eq = np.array([z_ref + np.trapz(1 - e[above], zv[above]) / (1 - eps_s) for e in ev[sel]])
-        if not (np.nanmin(zt[sel]) - h2 > np.nanmax(zb[sel]) + h2 and sel.sum() >= 4):
-            return None, None
-        u_eq = -np.polyfit(tv[sel], z_eq, 1)[0]
+        z_ref, eps_s, te, z_eq = eq
+        u_eq = -np.polyfit(te, z_eq, 1)[0]
         row = Row(self.name, f"equivalent sharp interface (solid above z = {z_ref * 1e3:.2f} mm / "
                              f"(1 − ε_s), ε_s = {eps_s:.3f}), line fit over the same window",
                   f"{u_k * 1e3:.4g} mm/s", "Kynch with (4.4)", f"{u_eq * 1e3:.4g} mm/s",
                   u_eq / u_k - 1, None, r, kind="comparison", reference_kind="own-closure",
                   note="bulk sphere speed by mass conservation")
-        return row, (tv[sel], z_eq, u_eq)
+        return row, (te, z_eq, u_eq)
 
     def evaluate(self, results, ctx):
         rows = []

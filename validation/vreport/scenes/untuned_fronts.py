@@ -9,7 +9,7 @@ import theory
 from ..figures import plt
 from ..rows import Row, failed_run_rows
 from ..runs import Run
-from .common import front_speed_with_beat
+from .common import equivalent_interface, front_speed_with_beat
 
 
 class UntunedFronts:
@@ -100,10 +100,34 @@ class UntunedFronts:
                             f"u_t = {u_t * 1e3:.3f} mm/s (Dallavalle C_d)", f"{u_sim * 1e3:.4g} mm/s",
                             u_sim / u_rz - 1, None, r, kind="comparison", reference_kind="independent",
                             note=f"second reference; (4.4) is {100 * (u_k / u_rz - 1):+.1f} % from it"))
+            bulk = self.bulk_row(r, label, u_k, t_lo, t_hi)
+            if bulk:
+                rows.append(bulk)
             fits.append((key, eps0, r.case.get("fidelity", "?"), ti, zt, t_lo, t_hi, slope, icpt - u_line * t_lo, u_k))
         if fits:
             self.figure(fits, ctx)
         return rows
+
+    def bulk_row(self, r, label, u_k, t_lo, t_hi):
+        """Informative: the bulk spheres' speed (common.equivalent_interface) by a line over
+        the window and over each of its thirds. A speed that grows from third to third is a
+        bulk settling faster as the run goes on (validation/README.md, session 42: the
+        mixture's lateral convection), not a front running ahead of a bulk at (4.4)."""
+        eq = equivalent_interface(r, t_lo, t_hi)
+        if eq is None:
+            return None
+        z_ref, eps_s, te, z_eq = eq
+        u_eq = -np.polyfit(te, z_eq, 1)[0]
+        edges = np.linspace(te[0], te[-1], 4)
+        thirds = []
+        for a, b in zip(edges[:-1], edges[1:]):
+            w = (te >= a - 1e-9) & (te <= b + 1e-9)
+            thirds.append(-np.polyfit(te[w], z_eq[w], 1)[0] / u_k - 1 if w.sum() >= 4 else float("nan"))
+        return Row(self.name, f"bulk sphere speed (equivalent sharp interface: solid above z = {z_ref * 1e3:.2f} mm "
+                              f"/ (1 − ε_s), ε_s = {eps_s:.3f}), {label}, line over the same window",
+                   f"{u_k * 1e3:.4g} mm/s", "Kynch with (4.4)", f"{u_eq * 1e3:.4g} mm/s", u_eq / u_k - 1, None, r,
+                   kind="comparison", reference_kind="own-closure",
+                   note="over the window's thirds " + ", ".join(f"{100 * e:+.1f} %" for e in thirds))
 
     def figure(self, fits, ctx):
         fig, axs = plt.subplots(1, 2, figsize=(11, 4))
