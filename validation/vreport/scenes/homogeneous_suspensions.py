@@ -27,10 +27,11 @@ class HomogeneousSuspensions:
     as 1/c0 to 1/c0^2. SOUND_SPEED_FACTOR sets c0 per size: the key's largest at 50 um, the
     case's 40 at 100 um. Dense random rows sit near 0.7-1 % at any c0 (50 um, eps 0.6:
     0.72-0.94 % at 50, 0.98 % at 100), which c0 does not lower, so it is not the compression
-    the watchdog's 1 % floor guards against; at 100 um, eps 0.6 two of three seeds were stopped
-    at 1.003 and 1.001 % (1.14 and 1.08 % when run to the end; validation/README.md, session 42). DENSE_WATCHDOG gives those rows
-    (eps <= 0.6 at 50 and 100 um) a bound of 1.5 %; each run's largest density error is
-    still a row (informative, against the 1 % limit). About 25 min on 2 cores (full mode)."""
+    the watchdog's 1 % floor guards against; at 100 um, eps 0.6 two of three seeds were
+    stopped at 1.003 and 1.001 % (1.14 and 1.08 % when run to the end; validation/README.md,
+    session 42). DENSE_WATCHDOG gives those rows (eps <= 0.6 at 50 and 100 um) a bound of
+    1.5 %; each run's largest density error is still a row (informative, against the 1 %
+    limit). About 25 min on 2 cores (full mode)."""
     name = "homogeneous_suspensions"
     case = "cases/suspension_homogeneous.yaml"
     SIZES = ((50e-6, 0.2), (100e-6, 0.1), (1.5e-3, 0.15))  # (d, time.end): some 4-8 d/u_t
