@@ -73,8 +73,8 @@ def equivalent_interface(r, t_lo, t_hi):
     h2 = 2 * r.case["fluid"]["smoothing_factor"] * r.case["fluid"]["spacing"]   # kernel support
     z_ref = 0.5 * (np.nanmin(zt[sel]) - h2 + np.nanmax(zb[sel]) + h2)
     eps_s = np.median(ev[0][(zv > h2) & (zv < zt[0] - h2)])
-    above = zv >= z_ref
-    z_eq = np.array([z_ref + np.trapz(1 - e[above], zv[above]) / (1 - eps_s) for e in ev[sel]])
     if not (np.nanmin(zt[sel]) - h2 > np.nanmax(zb[sel]) + h2 and sel.sum() >= 4):
         return None
+    above = zv >= z_ref
+    z_eq = np.array([z_ref + np.trapz(1 - e[above], zv[above]) / (1 - eps_s) for e in ev[sel]])
     return z_ref, eps_s, tv[sel], z_eq
