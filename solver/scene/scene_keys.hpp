@@ -210,7 +210,7 @@ inline constexpr SceneKey kSceneKeys[] = {
         "`interpolated` (2.68–2.71: V_j(−∇P + ∇·τ) at each sphere, returned with the drag) or `variational` (the pressure forces derive from the fluid's internal energy, pair by pair)")
         .note("`variational`; `interpolated` with `voidage_smoothing: double` or without fluid"),
     key_rows::boolean("coupling.hydrostatic_split", true,
-        "the pair forces carry P − P_h(z) and P_h's forces are added exactly, P_h the depth below the fill height tapered to zero over the top (2σ + ½) dx (variational only, gravity along −z)")
+        "the pair forces carry P − P_h(z) and P_h's forces are added exactly, P_h = ρ0 |g| × the depth below the fill height, zero above it (variational only, gravity along −z)")
         .note("`true` where it applies"),
     key_rows::number_or_auto("coupling.sphere_kernel_scale", "–", closed(1, 3),
         "H/h: each sphere's volume spread over the fluid with the kernel at H (2.50, 2.69–2.72, the variational forces); `auto` chooses 1, 1.25 or 1.5 from the scene (`scene/kernel_width_rule.hpp`)")

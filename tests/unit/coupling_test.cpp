@@ -505,44 +505,37 @@ double coupling_energy(Config& c, const TaitEnergy& eos, const HydrostaticPressu
 
 }  // namespace
 
-// The split's P_h (sph/hydrostatic_pressure.hpp): the depth below z_s times rho0 |g| in
-// the bulk, zero in the top layers, continuous with its slope across the blend, and its
-// gradient_z the derivative of its value (central differences, step 1e-6 of the taper).
-TEST(Coupling, HydrostaticSplitTapersToZeroAtTheTop) {
-  const double rho0 = 1000.0, g = -9.81, zs = 0.1, w = 0.02;
-  const HydrostaticPressure ph{rho0, g, zs, w};
-  EXPECT_DOUBLE_EQ(ph(0.03), rho0 * 9.81 * (zs - 0.03));
-  EXPECT_DOUBLE_EQ(ph.gradient_z(0.03), rho0 * g);
-  EXPECT_EQ(ph(zs - w), 0.0);
-  EXPECT_EQ(ph(zs + 0.01), 0.0);
-  EXPECT_EQ(ph.gradient_z(zs - 0.5 * w), 0.0);
-  const double step = 1e-6 * w;
-  for (double z = zs - 2.5 * w; z < zs; z += 0.01 * w) {
-    const double slope = (ph(z + step) - ph(z - step)) / (2.0 * step);
-    // the curvature jumps at the blend's ends (by up to 10/w): the differences' error there
-    // is ~ 10/w * step / 2 = 5e-6 of rho0 |g|
-    EXPECT_NEAR(ph.gradient_z(z), slope, 2e-5 * rho0 * 9.81) << "z " << z;
-    EXPECT_LE(ph.gradient_z(z), 0.0) << "z " << z;  // P_h never grows upward
-    EXPECT_GE(ph(z), 0.0) << "z " << z;
+// The split's P_h (sph/hydrostatic_pressure.hpp): the depth below z_s times rho0 |g|,
+// zero above z_s, and gradient_z the derivative of its value on either side (a taper, a
+// depth continued above z_s or a wrong sign fails).
+TEST(Coupling, HydrostaticSplitIsTheDepthBelowTheFillHeight) {
+  const double rho0 = 1000.0, g = -9.81, zs = 0.1;
+  const HydrostaticPressure ph{rho0, g, zs};
+  for (const double z : {0.0, 0.03, 0.099, zs - 1e-9}) {
+    EXPECT_NEAR(ph(z), rho0 * 9.81 * (zs - z), 1e-12 * rho0 * 9.81) << "z " << z;
+    EXPECT_DOUBLE_EQ(ph.gradient_z(z), rho0 * g) << "z " << z;
   }
-  for (double edge : {zs - 2.0 * w, zs - w}) {  // C1 at both ends of the blend
-    EXPECT_NEAR(ph(edge - step), ph(edge + step), 3.0 * step * rho0 * 9.81);
-    EXPECT_NEAR(ph.gradient_z(edge - step), ph.gradient_z(edge + step), 1e-4 * rho0 * 9.81);
+  for (const double z : {zs, zs + 1e-9, zs + 0.01}) {
+    EXPECT_EQ(ph(z), 0.0) << "z " << z;
+    EXPECT_EQ(ph.gradient_z(z), 0.0) << "z " << z;
   }
+  EXPECT_EQ(HydrostaticPressure{}(0.0), 0.0);  // no split
+  EXPECT_EQ(HydrostaticPressure{}.gradient_z(0.0), 0.0);
 }
 
 // The variational coupling's forces are minus the gradient of the energy above, with and
-// without the hydrostatic split (scene key coupling.hydrostatic_split; linear, and tapered
-// to zero over the top as the solver runs it: a wrong slope in the blend fails), with the fluid's
+// without the hydrostatic split (scene key coupling.hydrostatic_split; with z_s at the box's
+// top, and at half its height, among the spheres, where P_h and its force stop: a force added
+// above z_s fails), with the fluid's
 // kernel and with the spheres' kernel twice as wide (coupling.sphere_kernel_scale = 2; its
 // support, 1.3 mm, exceeds half the 1.6 mm periodic box, so spheres near a face reach a
 // fluid particle through two images): checked against
 // central differences (step 1e-7 m, 5e-4 of the spacing; truncation ~1e-7) on every
 // axis of the spheres off the periodic faces and of 20 fluid particles near spheres.
 // A wrong sign, factor or missing term (the split's -grad P_h/rho on the fluid, its
-// buoyancy on the spheres) is an O(1) error. Measured: 1.3e-5 (no split, scale 1), 2e-6 or
-// less in the other three, the floor of the differences (step 3e-7: 9e-5, truncation; 1e-8:
-// 9e-5, round-off).
+// buoyancy on the spheres, P_h's force above z_s) is an O(1) error. Measured: 7.1e-5 (no
+// split, and z_s at half the box, the same top-layer particle), 9.3e-6 or less in the other
+// four, the floor of the differences (step 3e-7: 9e-5, truncation; 1e-8: 9e-5, round-off).
 TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
   const TaitEnergy eos;
   for (const auto& [split, kernel_scale] :
@@ -554,11 +547,10 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
     for (std::size_t j = 0; j < s.n_owned; ++j)
       s.radius[j] *= 2.0;  // voidage 0.9-1, away from the floor
     // a strong 'gravity' so that P_h (up to 4e4 Pa) is as large as the EOS's P (B = 1e5 Pa)
-    // split 2: tapered over the spheres' heights (0.5-0.8 of the box): P_h linear below
-    // 0.6, blended over 0.6-0.8, zero above
-    const double taper = split == 2 ? 0.2 * c.box.hi[2] : 0.0;
+    // split 2: z_s at half the box, among the spheres (0.2-0.8 of it)
+    const double surface = (split == 2 ? 0.5 : 1.0) * c.box.hi[2];
     const HydrostaticPressure ph =
-        split ? HydrostaticPressure{1000.0, -2e4, c.box.hi[2], taper} : HydrostaticPressure{};
+        split ? HydrostaticPressure{1000.0, -2e4, surface} : HydrostaticPressure{};
     coupling_energy(c, eos, ph);
     std::fill(f.ax.begin(), f.ax.end(), 0.0);
     std::fill(f.ay.begin(), f.ay.end(), 0.0);
@@ -590,9 +582,14 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
         worst = std::max(worst, std::abs(minus_gradient(*coord[d]) - analytic[d]) / scale);
       ++spheres;
     }
-    for (std::size_t a = 0; a < f.n_owned && fluid < 20; ++a) {
+    int above = 0;  // spheres and fluid particles above z_s among those checked
+    for (std::size_t j = 0; j < s.n_owned; ++j)
+      above += split == 2 && !(c.sh.n_ghost() && s.y[j] < 1e-5) && s.z[j] > ph.surface;
+    for (std::size_t k = 0; k < f.n_owned && fluid < 20; ++k) {
+      const std::size_t a = f.n_owned - 1 - k;  // from the top layer down
       if (f.kind[a] != kFluid || std::abs(fax[a]) + std::abs(fay[a]) < 1e-3 * std::abs(faz[a]))
         continue;
+      above += split == 2 && f.z[a] > ph.surface;
       const double m = f.mass[a];
       const double analytic[3] = {m * fax[a], m * fay[a], m * faz[a]};
       double* coord[3] = {&f.x[a], &f.y[a], &f.z[a]};
@@ -603,9 +600,12 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
     }
     std::printf(
         "split %d, sphere kernel scale %g: %d spheres, %d fluid particles, largest relative "
-        "deviation %.2e\n",
-        split, kernel_scale, spheres, fluid, worst);
+        "deviation %.2e (%d above z_s)\n",
+        split, kernel_scale, spheres, fluid, worst, above);
     EXPECT_GE(spheres, 5);
+    if (split == 2) {
+      EXPECT_GE(above, 10);
+    }
     EXPECT_EQ(fluid, 20);
     EXPECT_LT(worst, 1e-4);
   }
@@ -702,7 +702,7 @@ TEST(Coupling, SphereSumsMatchBruteForceWithEitherInstructionSet) {
     std::mt19937 rng(8);
     std::uniform_real_distribution<double> u(0.0, 100.0);
     for (std::size_t a = 0; a < f.n_owned; ++a) f.P[a] = u(rng);
-    const HydrostaticPressure ph{1000.0, -9.81, c.box.hi[2], 0.2 * c.box.hi[2]};  // tapered
+    const HydrostaticPressure ph{1000.0, -9.81, 0.6 * c.box.hi[2]};  // z_s among the spheres
     const std::size_t ns = s.n_owned;
     const auto owner = [&](std::size_t j) { return j < ns ? j : c.sh.periodic().source()[j - ns]; };
     // brute force: per owned sphere, S, S eps, S u_x, m theta_x W, and the pressure sums

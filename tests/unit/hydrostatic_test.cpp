@@ -252,3 +252,27 @@ TEST(Hydrostatic, LiftedDropFallsWithTheSplit) {
     EXPECT_NEAR(fall / free_fall, 1.0, 0.02) << "split " << split;
   }
 }
+
+// The split the solver runs (compile_step_params): P_h the depth below the fill height
+// times rho_f g, with its gradient rho_f g, and zero from the fill height up. Session 28
+// documented a taper over the top (2 sigma + 1/2) dx that no run had; this reads what the
+// step is given, not a split the test builds itself.
+TEST(Hydrostatic, SolversSplitIsTheDepthBelowTheFillHeight) {
+  const Scene sc =
+      load_scene_text(kColumn, "column.yaml", {"coupling.pressure_coupling=variational"});
+  ASSERT_TRUE(sc.hydrostatic_split);
+  const HydrostaticPressure ph = Simulation(sc).hydrostatic_split();  // a copy: the step goes
+  const double H = sc.fill_height(), dx = sc.fluid.spacing, rho_g = sc.fluid.density * 9.81;
+  for (const double depth : {0.5 * dx, 3.0 * dx, 0.5 * H, H}) {  // the top layer to the base
+    EXPECT_NEAR(ph(H - depth), rho_g * depth, 1e-9 * rho_g * depth) << depth / dx << " dx";
+    EXPECT_NEAR(ph.gradient_z(H - depth), -rho_g, 1e-9 * rho_g) << depth / dx << " dx";
+  }
+  for (const double above : {0.0, 0.5 * dx, 3.0 * dx}) {
+    EXPECT_EQ(ph(H + above), 0.0) << above / dx << " dx above";
+    EXPECT_EQ(ph.gradient_z(H + above), 0.0) << above / dx << " dx above";
+  }
+  const Scene off = load_scene_text(
+      kColumn, "column.yaml",
+      {"coupling.pressure_coupling=variational", "coupling.hydrostatic_split=false"});
+  EXPECT_EQ(Simulation(off).hydrostatic_split()(0.0), 0.0);  // no split: P_h is zero
+}
