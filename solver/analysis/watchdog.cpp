@@ -98,10 +98,9 @@ std::optional<std::string> named_fluid_cause(const Simulation& sim, long at) {
           f.eps[at]);
     return fmt::format(
         "the fluid pushed through the packed spheres around it (voidage {:.3g}): its Darcy "
-        "pressure grows as (1 - eps)^2 / (eps^3 d^2), which the automatic c0 does not count: "
-        "raise fluid.sound_speed_factor (a random suspension of 50 um glass at eps 0.5 needed "
-        "40-80, bench/TRADEOFF.md)",
-        f.eps[at]);
+        "pressure grows as (1 - eps)^2 / (eps^3 d^2), which the automatic c0 does not count, "
+        "and the error falls as 1/c0 to 1/c0^2: {}",
+        f.eps[at], twice_the_sound_speed(sc));
   }
   double v2 = 0.0;
   for (std::size_t a = 0; a < f.n_owned; ++a)
@@ -131,9 +130,8 @@ std::string density_cause(const Simulation& sim, long at) {
   if (auto named = named_fluid_cause(sim, at)) return *named;
   return fmt::format(
       "the flow's pressure is larger than c0 = {:.3g} m/s leads to expect (the spheres' voidage "
-      "fluctuating, no free surface to relieve it): raise fluid.sound_speed_factor (the error "
-      "falls as 1/c0 to 1/c0^2)",
-      sim.scene().fluid.sound_speed);
+      "fluctuating, no free surface to relieve it), and the error falls as 1/c0 to 1/c0^2: {}",
+      sim.scene().fluid.sound_speed, twice_the_sound_speed(sim.scene()));
 }
 
 // Why a particle went wrong (non-finite, through the wall, out of the box): the contacts'

@@ -29,7 +29,8 @@ WatchdogWarnings::WatchdogWarnings(const Scene& sc)
                                          : HUGE_VAL),
       expected_overlap_(spring_expected_overlap(sc)),
       density_alarm_(sc.watchdog.density_error),
-      overlap_alarm_(sc.watchdog.overlap) {}
+      overlap_alarm_(sc.watchdog.overlap),
+      sound_speed_advice_(sc.fluid.enabled ? twice_the_sound_speed(sc) : std::string()) {}
 
 std::vector<std::string> WatchdogWarnings::observe(const WatchdogStepTally& t, long step,
                                                    double time) {
@@ -41,9 +42,9 @@ std::vector<std::string> WatchdogWarnings::observe(const WatchdogStepTally& t, l
         "{}: the largest density error passed {:.2g} %, {} times the {:.2g} % that c0 leads to "
         "expect (the alarm is at {:.2g} %): the flow presses the fluid harder than the sound "
         "speed rule counts (a dense bed's Darcy pressure, a fast flow); log.csv "
-        "max_density_error follows it; raise fluid.sound_speed_factor if it keeps growing",
+        "max_density_error follows it; if it keeps growing, {}",
         when, 100 * density_warning(), kDensityWarningMargin, 100 * expected_density_,
-        100 * density_alarm_));
+        100 * density_alarm_, sound_speed_advice_));
   }
   if (t.overlap_past_expected && !overlap_warned_) {
     overlap_warned_ = true;

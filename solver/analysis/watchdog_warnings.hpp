@@ -43,6 +43,7 @@ class WatchdogWarnings {
  private:
   double expected_density_ = 0, expected_overlap_ = 0;
   double density_alarm_ = 0, overlap_alarm_ = 0;
+  std::string sound_speed_advice_;      // twice c0, in the key the user sets
   long floor_run_ = 0, clamp_run_ = 0;  // steps in a row with a hit
   bool density_warned_ = false, overlap_warned_ = false;
   bool floor_warned_ = false, clamp_warned_ = false;

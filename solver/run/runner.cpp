@@ -404,7 +404,7 @@ RunSummary run_scene(const Scene& scene, RunOptions opt) {
         "sphdem: largest density error over the logged steps {:.2g} % (expected {:.2g} % from c0; "
         "limit 1 %{})\n",
         100 * r.largest_density_error, 100 * sound_speed_report(scene).expected_density_error(),
-        r.largest_density_error > 0.01 ? ": raise fluid.sound_speed" : "");
+        r.largest_density_error > 0.01 ? ": " + twice_the_sound_speed(scene) : "");
   if (sphere_total > 0)
     *out << fmt::format("sphdem: largest overlap over the logged steps {:.3g} d{}\n",
                         r.largest_overlap,

@@ -208,12 +208,7 @@ Scene parse(const YAML::Node& root, SceneProblems& problems) {
     sc.fluid.expected_speed = u;
   }
   if (sc.fluid.resolution != 1.0) resolve_resolution(sc, cx.resolution_given, problems);
-  if (sc.fluid.sound_speed <= 0) {  // f max(u_m, sqrt(2 g H)), and the buoyancy bound
-    const double um =
-        std::max(sc.fluid.expected_speed, std::sqrt(2.0 * g * sc.hydrostatic_height()));
-    sc.fluid.sound_speed =
-        std::max(sc.fluid.sound_speed_factor * std::max(um, 1e-6), buoyancy_sound_speed(sc));
-  }
+  if (sc.fluid.sound_speed <= 0) sc.fluid.sound_speed = automatic_sound_speed(sc);
   // The automatic values come from the file's own, and extreme ones (a density of 1e300)
   // leave them infinite or NaN: no run can use that, and case.yaml cannot record it.
   auto finite = [&](const char* key, double v, const char* from) {

@@ -12,10 +12,14 @@
 // buoyancy that share is the settling speed's error (Stokes: v ~ rho_p - rho_f): at
 // rho_p/rho_f = 1.05 twenty times the density error. The automatic c0 keeps it under
 // kBuoyancyErrorTarget for the lightest species (scene_loader.cpp).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "scene/scene.hpp"
+#include "scene/scene_keys.hpp"
 
 namespace sphdem {
 
@@ -45,6 +49,35 @@ inline double buoyancy_sound_speed(const Scene& sc, double share = kBuoyancyErro
   if (sc.periodic_z()) return 0.0;
   return std::sqrt(sc.gravity_magnitude() * sc.hydrostatic_height() * neutral_buoyancy_factor(sc) /
                    share);
+}
+
+// The automatic c0 (fluid.sound_speed 0): f max(u_m, sqrt(2 |g| H)), or the buoyancy
+// bound where it is larger. Needs expected_speed and the fill height resolved.
+inline double factor_sound_speed(const Scene& sc, double factor) {
+  const double um = std::max(sc.fluid.expected_speed,
+                             std::sqrt(2.0 * sc.gravity_magnitude() * sc.hydrostatic_height()));
+  return factor * std::max(um, 1e-6);
+}
+inline double automatic_sound_speed(const Scene& sc) {
+  return std::max(factor_sound_speed(sc, sc.fluid.sound_speed_factor), buoyancy_sound_speed(sc));
+}
+
+// What to change for twice the scene's c0, in the key a user sets: fluid.sound_speed_factor
+// where the automatic c0 is the factor's and twice the factor is within the key's range,
+// else fluid.sound_speed. A density error the sound speed rule does not count (a dense
+// suspension's Darcy pressure, a periodic column's fluctuations) falls as 1/c0 to 1/c0^2,
+// so doubling c0 at least halves it (validation/README.md, session 43); the SPH step's
+// cost doubles with it.
+inline std::string twice_the_sound_speed(const Scene& sc) {
+  const double c0 = sc.fluid.sound_speed, f = sc.fluid.sound_speed_factor;
+  const double f_max = scene_key("fluid.sound_speed_factor").range.hi;
+  const bool by_factor = std::abs(c0 - factor_sound_speed(sc, f)) <= 1e-9 * c0;
+  if (by_factor && 2.0 * f <= f_max)
+    return fmt::format("raise fluid.sound_speed_factor from {:g} to {:g} (c0 {:.3g} -> {:.3g} m/s)",
+                       f, 2.0 * f, c0, 2.0 * c0);
+  return fmt::format(
+      "set fluid.sound_speed: {:.3g} (m/s; twice c0 = {:.3g}{})", 2.0 * c0, c0,
+      by_factor ? fmt::format(", and fluid.sound_speed_factor is at most {:g}", f_max) : "");
 }
 
 inline SoundSpeedReport sound_speed_report(const Scene& sc) {
