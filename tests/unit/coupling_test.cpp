@@ -570,10 +570,11 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
       return -(up - down) / (2.0 * step);
     };
     double worst = 0.0;
-    int spheres = 0, fluid = 0;
+    int spheres = 0, fluid = 0, above = 0;  // above: those checked above z_s (split 2)
     for (std::size_t j = 0; j < s.n_owned; ++j) {
       if (c.sh.n_ghost() && (s.y[j] < 1e-5))
         continue;  // on the periodic face (images move too; kept simple)
+      above += split == 2 && s.z[j] > ph.surface;
       const double V = s.volume(j);
       const double analytic[3] = {V * sgx[j], V * sgy[j], V * sgz[j]};
       double* coord[3] = {&s.x[j], &s.y[j], &s.z[j]};
@@ -582,9 +583,6 @@ TEST(Coupling, VariationalPressureForcesAreMinusTheEnergyGradient) {
         worst = std::max(worst, std::abs(minus_gradient(*coord[d]) - analytic[d]) / scale);
       ++spheres;
     }
-    int above = 0;  // spheres and fluid particles above z_s among those checked
-    for (std::size_t j = 0; j < s.n_owned; ++j)
-      above += split == 2 && !(c.sh.n_ghost() && s.y[j] < 1e-5) && s.z[j] > ph.surface;
     for (std::size_t k = 0; k < f.n_owned && fluid < 20; ++k) {
       const std::size_t a = f.n_owned - 1 - k;  // from the top layer down
       if (f.kind[a] != kFluid || std::abs(fax[a]) + std::abs(fay[a]) < 1e-3 * std::abs(faz[a]))
