@@ -3,6 +3,7 @@ snapshots (RUN_DIR/vtk/particles.pvd, fluid.pvd: `output.vtk.every`) and writes
 RUN_DIR/vtk/snapshots.npz with, per frame k, the arrays the report reads:
   time                      (frames,)
   s{k}_z, s{k}_vz, s{k}_d   the spheres' height, vertical velocity, diameter
+  s{k}_fz, s{k}_rho         the spheres' vertical fluid force (2.68) and density
   f{k}_z, f{k}_P, f{k}_eps, f{k}_rho, f{k}_kind   the SPH particles' (kind 0 fluid, 1 wall)
 report.py (system python, no VTK) calls it for the sand column's 1 m run."""
 import os
@@ -39,6 +40,7 @@ def main(run_dir):
     for k, ((_, sf), (_, ff)) in enumerate(zip(spheres, fluid)):
         pts, a = read(sf)
         out[f"s{k}_z"], out[f"s{k}_vz"], out[f"s{k}_d"] = pts[:, 2], a["velocity"][:, 2], a["diameter"]
+        out[f"s{k}_fz"], out[f"s{k}_rho"] = a["fluid_force"][:, 2], a["density"]
         pts, a = read(ff)
         out[f"f{k}_z"], out[f"f{k}_P"], out[f"f{k}_eps"] = pts[:, 2], a["pressure"], a["voidage"]
         out[f"f{k}_rho"], out[f"f{k}_kind"] = a["density"], a["kind"]

@@ -168,7 +168,7 @@ def uniform_size_species(d_min, d_max, rho, phi_total, bins=200):
     return [(d, rho, phi_total * d ** 3 / vol) for d in ds], [1.0 / bins] * bins
 
 
-def masliyah_velocities(species, rho_f, mu, g=G, drag=di_felice_drag):
+def masliyah_velocities(species, rho_f, mu, g=G, drag=di_felice_drag, push=None):
     """Lab-frame settling speeds of a uniform multispecies suspension, no net volume flux
     (Masliyah 1979, Chem. Eng. Sci. 34:1166; Lockett & Al-Habbooby 1973; Patwardhan & Tien
     1985), with the Di Felice drag of the scenes in place of Masliyah's Richardson-Zaki f.
@@ -185,13 +185,15 @@ def masliyah_velocities(species, rho_f, mu, g=G, drag=di_felice_drag):
       w_i = -v_i = s_i - sum_j phi_j s_j.                                   (M4)
     One species: rho_susp = rho_av of (4.2-4.4) and w = eps s = u_s, i.e.
     di_felice_block_slip. `drag` replaces the Di Felice law (brown_lawler_drag for the sand
-    column). Returns (w list, u_s list, eps, rho_susp)."""
+    column). `push`, one per species, adds a downward force of that fraction of the sphere's
+    weight rho_i V_i g to (M2) (the contacts' mean push a run measures, which the model
+    lacks). Returns (w list, u_s list, eps, rho_susp)."""
     phi_tot = sum(p for _, _, p in species)
     eps = 1.0 - phi_tot
     rho_susp = eps * rho_f + sum(p * r for _, r, p in species)
     slips = []
-    for d, rho, phi in species:
-        weight = (rho - rho_susp) * math.pi * d ** 3 / 6.0 * g
+    for i, (d, rho, phi) in enumerate(species):
+        weight = (rho - rho_susp + (push[i] * rho if push else 0.0)) * math.pi * d ** 3 / 6.0 * g
         if weight == 0.0:
             slips.append(0.0)
             continue

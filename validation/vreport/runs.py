@@ -94,11 +94,12 @@ def snapshot_arrays(run_dir):
     pvd = os.path.join(vtk_dir, "particles.pvd")
     if not os.path.exists(pvd):
         return None
-    if not os.path.exists(npz) or os.path.getmtime(npz) < os.path.getmtime(pvd):
+    script = os.path.join(HERE, "snapshots_npz.py")
+    if not os.path.exists(npz) or os.path.getmtime(npz) < max(os.path.getmtime(pvd), os.path.getmtime(script)):
         pvpython = shutil.which("pvpython")
         if pvpython is None:
             return None
-        subprocess.run([pvpython, os.path.join(HERE, "snapshots_npz.py"), run_dir], check=True)
+        subprocess.run([pvpython, script, run_dir], check=True)
     return np.load(npz)
 
 
