@@ -263,7 +263,7 @@ class SandColumn:
 
         w = masliyah()
         push = None
-        if has_force and all(len(fs) == len(frames) for fs in fluid_share):
+        if has_force and len(frames) >= 2 and all(len(fs) == len(frames) for fs in fluid_share):
             push = [float(np.mean(fluid_share[i])) - 1 + np.polyfit(t_frames, np.array(cls[i]), 1)[0] / g
                     for i in range(10)]
             w_pushed = masliyah([push[min(9, max(0, int(np.digitize(d, edges)) - 1))] for d in ds])
