@@ -65,7 +65,7 @@ class SandPushes(unittest.TestCase):
             fh.write("<VTKFile/>\n")
         np.savez(os.path.join(vtk, "snapshots.npz"), **arrays)
         r = RunResult(Run("sand_column_1m", "cases/sand_column.yaml", {}), self.dir, 0.0, 0, [])
-        rows = SandColumn().mixture_speed_rows(r, self.species, self.masliyah, 0.26, "Masliyah")
+        rows = SandColumn().mixture_speed_rows(r, self.species, self.masliyah(), self.masliyah, 0.26, "Masliyah")
         settle_misses(rows)
         return rows
 

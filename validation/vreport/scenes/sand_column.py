@@ -178,7 +178,7 @@ class SandColumn:
         src = (f"Masliyah's multispecies hindered settling (theory.masliyah_velocities) with the case's drag "
                f"(Brown–Lawler C_d, Di Felice's ε^−χ), the uniform law in 200 sizes at ε = {eps}: "
                f"{min(w):.3f}–{max(w):.3f} m/s")
-        rows = self.mixture_speed_rows(r, species, masliyah, ref, src)
+        rows = self.mixture_speed_rows(r, species, w, masliyah, ref, src)
         dallavalle = theory.di_felice_block_slip(0.5 * (law["min"] + law["max"]), sand["density"], fl["density"],
                                                  fl["viscosity"], eps)
         # the grains already on the wall count with speed 0: a fraction ~(w + s) t / H of
@@ -200,7 +200,7 @@ class SandColumn:
     CLASS_TARGET = 0.10      # each tenth of the size law against Masliyah at its grains' sizes
     CANCEL_TARGET = 0.01     # the classes' contact pushes over the mixture, a fraction of its weight
 
-    def mixture_speed_rows(self, r, species, masliyah, ref, src):
+    def mixture_speed_rows(self, r, species, w, masliyah, ref, src):
         """Masliyah's speeds hold in the mixture at its initial composition: below the top,
         which the fastest size leaves at w_max t, and above the bed and the kinematic shocks
         rising from it. The spheres with z in MIXTURE x H in every snapshot of the last two
@@ -229,6 +229,9 @@ class SandColumn:
         lo, hi = self.MIXTURE[0] * H, self.MIXTURE[1] * H
         ds = np.array([d for d, _, _ in species])
         edges = np.linspace(ds[0] - 0.5 * (ds[1] - ds[0]), ds[-1] + 0.5 * (ds[1] - ds[0]), 11)
+
+        def size_class(d):   # 0 ... 9
+            return np.clip(np.digitize(d, edges) - 1, 0, 9)
         frames = [k for k, tk in enumerate(times) if t0 <= tk <= t1 + 1e-12]
         has_force = all(f"s{k}_fz" in snaps for k in frames)
         means, cls, own = [], [[] for _ in range(10)], [[] for _ in range(10)]
@@ -237,7 +240,7 @@ class SandColumn:
             z, vz, d = snaps[f"s{k}_z"], snaps[f"s{k}_vz"], snaps[f"s{k}_d"]
             inside = (z > lo) & (z < hi)
             means.append(float(np.mean(-vz[inside])))
-            c = np.clip(np.digitize(d, edges) - 1, 0, 9)
+            c = size_class(d)
             m = snaps[f"s{k}_rho"] * np.pi * d ** 3 / 6 if has_force else None
             for i in range(10):
                 sel = inside & (c == i)
@@ -261,12 +264,11 @@ class SandColumn:
         def class_reference(w, i):   # the mean of each grain's own speed, so it follows the class's sizes
             return float(np.mean(np.interp(np.concatenate(own[i]), ds, w)))
 
-        w = masliyah()
         push = None
         if has_force and len(frames) >= 2 and all(len(fs) == len(frames) for fs in fluid_share):
             push = [float(np.mean(fluid_share[i])) - 1 + np.polyfit(t_frames, np.array(cls[i]), 1)[0] / g
                     for i in range(10)]
-            w_pushed = masliyah([push[min(9, max(0, int(np.digitize(d, edges)) - 1))] for d in ds])
+            w_pushed = masliyah([push[i] for i in size_class(ds)])
             weights = [float(np.mean(mass[i])) for i in range(10)]
             net = sum(p * m for p, m in zip(push, weights)) / sum(weights)
             rows.append(Row(self.name, "the contacts' downward pushes on the ten size classes, summed over the "
