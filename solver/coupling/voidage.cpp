@@ -1,6 +1,11 @@
 #include "coupling/voidage.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "coupling/drag_law_table.hpp"
+#include "sph/kernel.hpp"
 
 namespace sphdem {
 
@@ -40,11 +45,34 @@ inline double floored_voidage(double solid, double eps_floor, std::size_t& clamp
   return eps_floor;
 }
 
+// Twice row a's solid sum over the spheres at or below it (level: half), the drag's kernel.
+inline double upstream_solid(const FluidParticles& f, const DemParticles& s,
+                             const FluidSpherePairs& pairs, std::size_t a) {
+  const std::vector<double>& weights = pairs.drag_w();
+  const double za = f.z[a];
+  double lower = 0.0;
+  for (std::uint32_t k = pairs.begin(a); k < pairs.end(a); ++k) {
+    const std::uint32_t j = pairs.sphere[k];
+    const double side = s.z[j] < za ? 2.0 : s.z[j] == za ? 1.0 : 0.0;
+    lower += side * s.volume(j) * weights[k];
+  }
+  return lower;
+}
+
 }  // namespace
+
+double VoidageUpstream::above_floor(double z) const {
+  if (!has_floor) return std::numeric_limits<double>::infinity();
+  const double d = z - floor_z;
+  if (period <= 0.0) return d;
+  const double m = d - period * std::floor(d / period);  // in [0, period)
+  return std::min(m, period - m);
+}
 
 std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s,
                                   const FluidSpherePairs& pairs, double eps_floor,
-                                  const BigSpheresSmoothedApart* big) {
+                                  const BigSpheresSmoothedApart* big,
+                                  const VoidageUpstream& upstream) {
   const long n = static_cast<long>(f.n_owned);
   const bool apart = pairs.drag_apart();
   std::size_t clamped = 0;
@@ -52,12 +80,16 @@ std::size_t compute_fluid_voidage(FluidParticles& f, const DemParticles& s,
   for (long a = 0; a < n; ++a) {
     SolidSums sums = solid_sums(s, pairs, false, a, big);
     f.eps[a] = floored_voidage(sums.solid, eps_floor, clamped);
-    if (apart) {  // eps_drag and the Sauter mean from the drag's kernel
-      sums = solid_sums(s, pairs, true, a, big);
+    if (apart) sums = solid_sums(s, pairs, true, a, big);  // the drag's kernel
+    const bool upstream_here =
+        upstream.on && !big && f.kind[a] == kFluid && sums.solid > 1.0 - kLoneSphereVoidage &&
+        upstream.above_floor(f.z[a]) >= kernel::kSupport / pairs.inv_drag_kernel_h(f, a);
+    if (upstream_here)
+      f.eps_drag[a] = floored_voidage(upstream_solid(f, s, pairs, a), eps_floor, clamped);
+    else if (apart)
       f.eps_drag[a] = floored_voidage(sums.solid, eps_floor, clamped);
-    } else {
+    else
       f.eps_drag[a] = f.eps[a];
-    }
     // Sauter mean (sum_i x_i / d_i)^-1 with the kernel-weighted volume fractions x_i (2.80)
     f.d_sauter[a] = sums.solid_over_d > 0.0 ? sums.solid / sums.solid_over_d : 0.0;
   }

@@ -346,7 +346,8 @@ void Simulation::compute_voidage() {
   sphere_pairs_.evaluate(f, s, c.variational);
   continue_bed_below_distributor(sphere_pairs_, f, s, c.distributor);
   if (!c.double_smoothing) {
-    voidage_clamped_ = compute_fluid_voidage(f, s, sphere_pairs_, c.voidage_floor);
+    voidage_clamped_ =
+        compute_fluid_voidage(f, s, sphere_pairs_, c.voidage_floor, nullptr, c.voidage_upstream);
     return;
   }
   big_cells_.build(s.x.data(), s.y.data(), s.z.data(), s.size(), c.big_cutoff);

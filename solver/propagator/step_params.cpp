@@ -60,6 +60,12 @@ StepParams compile_step_params(const Scene& scene) {
   const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   if (scene.drag_upstream && g_norm > 0.0)
     c.drag_upstream = {g[0] / g_norm, g[1] / g_norm, g[2] / g_norm};
+  if (scene.drag_voidage_upstream) {  // the floor: the bottom wall, or the plate if periodic
+    c.voidage_upstream.on = true;
+    c.voidage_upstream.floor_z = scene.box.lo[2];
+    c.voidage_upstream.has_floor = !scene.periodic_z() || scene.flow.distributor;
+    c.voidage_upstream.period = scene.periodic_z() ? scene.box.length(2) : 0.0;
+  }
   c.voidage_floor = scene.voidage_floor;
   if (scene.periodic_z() && scene.flow.distributor)
     c.distributor = DistributorPlane{scene.box.lo[2], scene.box.length(2)};

@@ -7,6 +7,7 @@
 
 #include "coupling/distributor_mirror.hpp"
 #include "coupling/drag_law_table.hpp"
+#include "coupling/voidage.hpp"
 #include "dem/contact_registry.hpp"
 #include "dem/sphere_walls.hpp"
 #include "domain/box.hpp"
@@ -39,6 +40,8 @@ struct CouplingParams {
   // coupling.drag_upstream: gravity's unit vector, the side of a sphere its drag's fields are
   // read from (FluidSpherePairs::upstream); zero: the whole kernel
   std::array<double, 3> drag_upstream{};
+  // coupling.drag_voidage_upstream: the fluid's drag voidage from the spheres below it
+  VoidageUpstream voidage_upstream;
   double voidage_floor = 0.3;
   bool double_smoothing = false;  // (3.8-3.10)
   double big_h_over_d = 1.5;

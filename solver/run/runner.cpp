@@ -529,10 +529,11 @@ std::string describe_scene(const Scene& sc, const std::vector<Scene>& presets, i
   }
   s += fmt::format("drag law         {}\n", drag::drag_law_name(sc.drag));
   s += fmt::format(
-      "coupling         {}{}, spheres' kernel H = {} h, the drag's {} h{}{}\n",
+      "coupling         {}{}, spheres' kernel H = {} h, the drag's {} h{}{}{}\n",
       sc.pressure_coupling == PressureCoupling::kVariational ? "variational" : "interpolated",
       sc.hydrostatic_split ? " with the hydrostatic split" : "", sc.sphere_kernel_scale,
       sc.drag_kernel_scale, sc.drag_upstream ? " read from its upstream (gravity's) half" : "",
+      sc.drag_voidage_upstream ? ", the fluid's drag voidage from the spheres below it" : "",
       sc.sphere_kernel_reason.empty() ? "" : " (" + sc.sphere_kernel_reason + ")");
   const double dt = sim.dt_sph();
   const int sub = sp.n_owned == 0

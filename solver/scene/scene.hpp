@@ -205,9 +205,10 @@ struct Scene {
   DoubleSmoothingSpec double_smoothing;
   PressureCoupling pressure_coupling = PressureCoupling::kInterpolated;
   bool hydrostatic_split = false;
-  double sphere_kernel_scale = 1;  // H / h, see PressureCoupling (resolved)
-  double drag_kernel_scale = 1;    // H_drag / h, see PressureCoupling (resolved)
-  bool drag_upstream = false;      // coupling.drag_upstream (interpolation.hpp)
+  double sphere_kernel_scale = 1;      // H / h, see PressureCoupling (resolved)
+  double drag_kernel_scale = 1;        // H_drag / h, see PressureCoupling (resolved)
+  bool drag_upstream = false;          // coupling.drag_upstream (interpolation.hpp)
+  bool drag_voidage_upstream = false;  // coupling.drag_voidage_upstream (voidage.hpp)
   // The loader's record of coupling.sphere_kernel_scale: auto (scene/kernel_width_rule.hpp):
   // what it chose and why (empty when the file gave a number).
   std::string sphere_kernel_reason;

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "coupling/drag_exchange.hpp"
+#include "coupling/drag_law_table.hpp"
 #include "coupling/fluid_sphere_pairs.hpp"
 #include "coupling/interpolation.hpp"
 #include "coupling/pressure_coupling.hpp"
@@ -308,6 +309,96 @@ TEST(Coupling, DragUpstreamReadsTheHalfGravityPointsTo) {
   c.pairs.upstream = {0.0, 0.0, -1.0};
   interpolate_fluid_at_spheres(s, f, c.pairs, c.sh, c.scratch);
   for (std::size_t j = 1; j < s.n_owned; ++j) EXPECT_DOUBLE_EQ(s.ufz[j], ufz_whole[j]);
+}
+
+// A simple cubic lattice of spheres (spacing dx / 2, solid fraction 0.3) filling the column
+// up to z_top, on the fluid lattice without jitter, so that the sphere layers lie
+// symmetrically about every fluid particle.
+void fill_with_spheres(Config& c, double z_top) {
+  DemParticles& s = c.s;
+  const double ds = 1e-4, r = std::cbrt(0.3 * ds * ds * ds * 3.0 / (4.0 * M_PI));
+  const int nxy = static_cast<int>(std::lround(c.box.hi[0] / ds));
+  const int nz = static_cast<int>(std::floor(z_top / ds));
+  s.resize(nxy * nxy * nz);
+  s.n_owned = s.size();
+  std::size_t j = 0;
+  for (int k = 0; k < nz; ++k)
+    for (int iy = 0; iy < nxy; ++iy)
+      for (int ix = 0; ix < nxy; ++ix, ++j) {
+        s.x[j] = (ix + 0.25) * ds;
+        s.y[j] = (iy + 0.25) * ds;
+        s.z[j] = (k + 0.5) * ds;
+        s.radius[j] = r;
+        s.mass[j] = 2500.0 * s.volume(j);
+      }
+  rebuild_sphere_side(c);
+}
+
+// coupling.drag_voidage_upstream: under a suspension's top every fluid particle whose
+// support clears the floor reads, as its drag's voidage, exactly what it reads inside a
+// column full of the same suspension (the lower half of its kernel doubled), where the
+// whole kernel reads the clear liquid above too; inside the suspension the doubled half
+// equals the whole kernel; within a support of the floor, off, or for a lone sphere the
+// whole kernel is read; the voidage the pressure coupling reads (eps) never changes.
+TEST(Coupling, DragVoidageUpstreamReadsTheSuspensionUnderItsTop) {
+  Config top, full;
+  build(top, 0, 5, 0.0);
+  build(full, 0, 5, 0.0);
+  const double z_top = 1.6e-3;
+  fill_with_spheres(top, z_top);
+  fill_with_spheres(full, top.box.hi[2] + 0.7e-3);
+  VoidageUpstream upstream;
+  upstream.on = true;  // the floor at z = 0
+  FluidParticles& f = top.f;
+  compute_fluid_voidage(f, top.s, top.pairs, 0.05);
+  const std::vector<double> eps_whole = f.eps_drag;
+  compute_fluid_voidage(f, top.s, top.pairs, 0.05, nullptr, upstream);
+  compute_fluid_voidage(full.f, full.s, full.pairs, 0.05, nullptr, upstream);
+  int under_top = 0, inside = 0, at_floor = 0;
+  double read_clear = 0.0;  // how much more voidage the whole kernel reads under the top
+  for (std::size_t a = 0; a < f.n_owned; ++a) {
+    EXPECT_EQ(f.eps[a], eps_whole[a]) << "eps itself keeps the whole kernel";
+    const double support = kernel::kSupport * f.h[a];
+    if (f.kind[a] == kWall || f.z[a] < support) {  // the whole kernel at the floor
+      EXPECT_EQ(f.eps_drag[a], eps_whole[a]) << "z = " << f.z[a];
+      ++at_floor;
+    } else if (f.z[a] + support <= z_top - 0.5e-4) {  // the whole support in the suspension
+      EXPECT_NEAR(f.eps_drag[a], eps_whole[a], 1e-12) << "z = " << f.z[a];
+      ++inside;
+    } else if (f.z[a] < z_top) {  // under the top: the suspension's own reading
+      EXPECT_NEAR(f.eps_drag[a], full.f.eps[a], 1e-12) << "z = " << f.z[a];
+      read_clear = std::max(read_clear, eps_whole[a] - full.f.eps[a]);
+      ++under_top;
+    } else if (eps_whole[a] < kLoneSphereVoidage) {  // above the top: more of the suspension
+      EXPECT_LT(f.eps_drag[a], eps_whole[a]) << "z = " << f.z[a];
+    } else {  // as few spheres as a lone one: the whole kernel
+      EXPECT_EQ(f.eps_drag[a], eps_whole[a]) << "z = " << f.z[a];
+    }
+  }
+  EXPECT_GT(under_top, 0);
+  EXPECT_GT(inside, 0);
+  EXPECT_GT(at_floor, 0);
+  EXPECT_GT(read_clear, 0.05) << "the whole kernel should reach the clear liquid";
+  // a lone sphere, well clear of the floor: the whole kernel
+  Config lone;
+  build(lone, 1, 5, 0.0);
+  lone.s.z[0] = 1.2e-3;
+  rebuild_sphere_side(lone);
+  compute_fluid_voidage(lone.f, lone.s, lone.pairs, 0.05, nullptr, upstream);
+  for (std::size_t a = 0; a < lone.f.n_owned; ++a) EXPECT_EQ(lone.f.eps_drag[a], lone.f.eps[a]);
+}
+
+// The floor's height under a particle: the bottom wall, the nearest of a periodic column's
+// plate images, or none (periodic without a plate).
+TEST(Coupling, DragVoidageUpstreamFindsTheFloor) {
+  VoidageUpstream wall{true, 0.5, 0.0, true};
+  EXPECT_DOUBLE_EQ(wall.above_floor(0.75), 0.25);
+  VoidageUpstream plate{true, 0.0, 2.0, true};
+  EXPECT_DOUBLE_EQ(plate.above_floor(0.25), 0.25);
+  EXPECT_DOUBLE_EQ(plate.above_floor(1.75), 0.25);  // under the plate's image at 2
+  EXPECT_DOUBLE_EQ(plate.above_floor(-0.25), 0.25);
+  VoidageUpstream open{true, 0.0, 2.0, false};
+  EXPECT_TRUE(std::isinf(open.above_floor(0.1)));
 }
 
 // With the drag's kernel apart (sphere_kernel_scale 1.5, drag_kernel_scale 1), the fluid

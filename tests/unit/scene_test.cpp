@@ -547,6 +547,19 @@ TEST(SceneErrors, HydrostaticSplitNeedsVariationalAndVerticalGravity) {
                    .hydrostatic_split);
 }
 
+// coupling.drag_voidage_upstream: on with drag_upstream under gravity along -z, off under
+// tilted gravity (refused there when asked for) and without drag_upstream.
+TEST(SceneErrors, DragVoidageUpstreamNeedsGravityAlongMinusZ) {
+  error_of(kBase + "gravity: [0.5, 0, -9.8]\ncoupling: {drag_voidage_upstream: true}\n",
+           {kFile, "'coupling.drag_voidage_upstream'", "gravity along -z"});
+  EXPECT_TRUE(load_scene_text(kBase, kFile).drag_voidage_upstream);
+  EXPECT_FALSE(load_scene_text(kBase + "gravity: [0.5, 0, -9.8]\n", kFile).drag_voidage_upstream);
+  EXPECT_FALSE(
+      load_scene_text(kBase + "coupling: {drag_upstream: false}\n", kFile).drag_voidage_upstream);
+  EXPECT_FALSE(load_scene_text(kBase + "coupling: {drag_voidage_upstream: false}\n", kFile)
+                   .drag_voidage_upstream);
+}
+
 TEST(SceneErrors, DampingAndRestitutionExclusive) {
   error_of(kBase + "contact: {damping: 1.0e-4, restitution: 0.5}\n",
            {kFile, "'contact.restitution'", "damping", "not both"});

@@ -84,6 +84,11 @@ void read_coupling(MapReader& top, Scene& sc, ReadContext& cx) {
   if (sc.drag_upstream && !gravity)
     r.fail(r.key("drag_upstream"),
            "true needs gravity (the side it points to is the upstream half)");
+  // default: with drag_upstream under gravity along -z (the fluid's half below it)
+  sc.drag_voidage_upstream = r.boolean("drag_voidage_upstream", sc.drag_upstream && along_minus_z);
+  if (sc.drag_voidage_upstream && !along_minus_z)
+    r.fail(r.key("drag_voidage_upstream"),
+           "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
   r.finish();
 }
 
@@ -98,7 +103,8 @@ void write_coupling(YAML::Emitter& e, const Scene& sc) {
     << YAML::Key << "hydrostatic_split" << YAML::Value << sc.hydrostatic_split << YAML::Key
     << "sphere_kernel_scale" << YAML::Value << sc.sphere_kernel_scale << YAML::Key
     << "drag_kernel_scale" << YAML::Value << sc.drag_kernel_scale << YAML::Key << "drag_upstream"
-    << YAML::Value << sc.drag_upstream;
+    << YAML::Value << sc.drag_upstream << YAML::Key << "drag_voidage_upstream" << YAML::Value
+    << sc.drag_voidage_upstream;
   if (sc.double_smoothing.enabled)
     e << YAML::Key << "big_species" << YAML::Value << YAML::Flow << sc.double_smoothing.big_species
       << YAML::Key << "big_h_over_d" << YAML::Value << sc.double_smoothing.h_over_d;
