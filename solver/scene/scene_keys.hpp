@@ -221,9 +221,9 @@ inline constexpr SceneKey kSceneKeys[] = {
     key_rows::boolean("coupling.drag_upstream", true,
         "the drag's fields at a sphere (ε and u_f of 2.74) gathered from the fluid on the side gravity points to, the half of its kernel the fluid passing a settling or fluidised sphere comes from, where that half holds at least a quarter of the Shepard sum and the sphere is not alone (voidage under 0.99; else the whole kernel, as at the floor and for a lone sphere): the clear liquid above a suspension then does not speed its top spheres into a skin that overturns (validation/README.md, session 37); the Shepard sum and the reaction keep the whole kernel")
         .note("`true` under gravity"),
-    key_rows::boolean("coupling.drag_voidage_upstream", true,
-        "the voidage the drag reads at a fluid particle (ε_drag, which the spheres above it gather) from the spheres at or below it: 1 − 2 Σ_{z_j ≤ z_a} V_j W_aj, the lower half of 2.50 doubled, equal to the whole kernel's in a uniform suspension; under a suspension's top it reads the suspension, not the clear liquid above it (validation/README.md, session 45); the whole kernel within a support of the floor or the distributor plate, for a lone sphere (ε ≥ 0.99) and with `voidage_smoothing: double`")
-        .note("`drag_upstream`'s value under gravity along −z, else `false`"),
+    key_rows::boolean("coupling.drag_voidage_upstream", false,
+        "the voidage the drag reads at a fluid particle (ε_drag, which the spheres above it gather with `drag_upstream`) from the spheres at or below it: 1 − 2 Σ_{z_j ≤ z_a} V_j W_aj, the lower half of 2.50 doubled, equal to the whole kernel's in a uniform suspension; under a suspension's top it reads the suspension, not the clear liquid above it, and the top spheres do not pack into a skin; the whole kernel within a support of the floor or the distributor plate, for a lone sphere (ε ≥ 0.99) and with `voidage_smoothing: double`. For a suspension settling from rest onto the floor: the lower face of a falling block or cloud would read the clear liquid under it and fall fast (validation/README.md, session 45). Needs gravity along −z and `drag_upstream`")
+        .note("`false`"),
 
     // ---- time, startup, output
     // ---- flow (domain.periodic_z)

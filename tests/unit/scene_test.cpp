@@ -547,17 +547,16 @@ TEST(SceneErrors, HydrostaticSplitNeedsVariationalAndVerticalGravity) {
                    .hydrostatic_split);
 }
 
-// coupling.drag_voidage_upstream: on with drag_upstream under gravity along -z, off under
-// tilted gravity (refused there when asked for) and without drag_upstream.
-TEST(SceneErrors, DragVoidageUpstreamNeedsGravityAlongMinusZ) {
+// coupling.drag_voidage_upstream: off unless asked for; refused under tilted gravity and
+// without drag_upstream (the spheres would not read the fluid below them).
+TEST(SceneErrors, DragVoidageUpstreamNeedsGravityAlongMinusZAndDragUpstream) {
   error_of(kBase + "gravity: [0.5, 0, -9.8]\ncoupling: {drag_voidage_upstream: true}\n",
            {kFile, "'coupling.drag_voidage_upstream'", "gravity along -z"});
-  EXPECT_TRUE(load_scene_text(kBase, kFile).drag_voidage_upstream);
-  EXPECT_FALSE(load_scene_text(kBase + "gravity: [0.5, 0, -9.8]\n", kFile).drag_voidage_upstream);
-  EXPECT_FALSE(
-      load_scene_text(kBase + "coupling: {drag_upstream: false}\n", kFile).drag_voidage_upstream);
-  EXPECT_FALSE(load_scene_text(kBase + "coupling: {drag_voidage_upstream: false}\n", kFile)
-                   .drag_voidage_upstream);
+  error_of(kBase + "coupling: {drag_upstream: false, drag_voidage_upstream: true}\n",
+           {kFile, "'coupling.drag_voidage_upstream'", "drag_upstream: true"});
+  EXPECT_FALSE(load_scene_text(kBase, kFile).drag_voidage_upstream);
+  EXPECT_TRUE(load_scene_text(kBase + "coupling: {drag_voidage_upstream: true}\n", kFile)
+                  .drag_voidage_upstream);
 }
 
 TEST(SceneErrors, DampingAndRestitutionExclusive) {

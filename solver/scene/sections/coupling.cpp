@@ -84,11 +84,15 @@ void read_coupling(MapReader& top, Scene& sc, ReadContext& cx) {
   if (sc.drag_upstream && !gravity)
     r.fail(r.key("drag_upstream"),
            "true needs gravity (the side it points to is the upstream half)");
-  // default: with drag_upstream under gravity along -z (the fluid's half below it)
-  sc.drag_voidage_upstream = r.boolean("drag_voidage_upstream", sc.drag_upstream && along_minus_z);
+  // default: off; for a suspension settling onto the floor (a falling block's or cloud's
+  // lower face would read the clear liquid under it: validation/README.md, session 45)
+  sc.drag_voidage_upstream = r.boolean("drag_voidage_upstream", false);
   if (sc.drag_voidage_upstream && !along_minus_z)
     r.fail(r.key("drag_voidage_upstream"),
            "true needs gravity along -z (gravity: [0, 0, g] with g < 0)");
+  else if (sc.drag_voidage_upstream && !sc.drag_upstream)
+    r.fail(r.key("drag_voidage_upstream"),
+           "true needs drag_upstream: true (the spheres read these fluid particles from below)");
   r.finish();
 }
 
