@@ -27,6 +27,8 @@ struct BigSpheresSmoothedApart {
 // a's support reaches the floor (the box's bottom wall, or the distributor plate and its
 // periodic images: no sphere lies below them), where a is among the spheres no more than a
 // lone sphere is (eps >= kLoneSphereVoidage), and with the big spheres smoothed apart.
+// Opt-in (a suspension settling onto the floor): the lower face of a falling block or cloud
+// reads the clear liquid under it through the same half.
 struct VoidageUpstream {
   bool on = false;
   double floor_z = 0.0;   // the floor's height (the box's bottom face)
